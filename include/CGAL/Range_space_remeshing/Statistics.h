@@ -1,0 +1,54 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_STATISTICS_H
+#define CGAL_RANGE_SPACE_REMESHING_STATISTICS_H
+
+#include <cstddef>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
+What a run of `primal_remesh()` did. Times are wall-clock milliseconds of the
+algorithm alone (no file input/output).
+*/
+struct Statistics
+{
+  std::size_t input_vertices = 0;
+  std::size_t input_faces = 0;
+  /// input vertices on which the range map was evaluated (the map is lazy)
+  std::size_t mapped_vertices = 0;
+  /// input triangles visited by the seeding and the arc tracing
+  std::size_t visited_faces = 0;
+  /// intersection vertices found (surface ∩ grid edges)
+  std::size_t intersection_vertices = 0;
+  /// triangle-to-triangle steps made by the arc tracer
+  std::size_t tracing_steps = 0;
+  std::size_t output_vertices = 0;
+  std::size_t output_edges = 0;
+  std::size_t output_faces = 0;
+  /// faces of degree 2 merged into one edge (their two vertices get valence 3)
+  std::size_t digons = 0;
+  /// output faces whose boundary visited a vertex twice, split by a chord
+  std::size_t non_simple_faces = 0;
+  /// output pieces too small to form a polygon mesh (fewer than 4 vertices), dropped
+  std::size_t dropped_pieces = 0;
+  /// number of seeds the traversal started from (SEEDED) or vertices scanned (COMPLETE_SCAN)
+  std::size_t seeds = 0;
+
+  double time_seeding_ms = 0;
+  double time_tracing_ms = 0;
+  double time_faces_ms = 0;
+  double time_output_ms = 0;
+  double time_total_ms = 0;
+};
+
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_STATISTICS_H

@@ -1,0 +1,472 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_GRID_TRACER_H
+#define CGAL_RANGE_SPACE_REMESHING_INTERNAL_GRID_TRACER_H
+
+// Section 3-4 of the paper: the intersection of the mapped surface u(M) with the
+// integer lattice of R^D, traced arc by arc across the input triangles.
+//
+// u(v) = (f(v) - origin) / cell_size, evaluated lazily and cached.
+// An intersection vertex is a (triangle, grid edge {x_i = k, x_j = m}, i < j) pair;
+// it has four arcs, stored in slots 0: +i, 1: +j, 2: -i, 3: -j, which is their
+// counter-clockwise order on the surface when the triangle's orientation projected
+// on (i, j) is positive, clockwise otherwise.
+
+#include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/internal/Perturbed_predicates.h>
+#include <CGAL/Range_space_remeshing/internal/Vertex_table.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+namespace internal {
+
+constexpr std::uint32_t no_link = std::uint32_t(-1);
+
+// Lattice levels are kept in 32-bit integers; range coordinates beyond this bound
+// mean an absurd cell size and are rejected before they could overflow.
+constexpr double maximum_lattice_coordinate = 1 << 29;
+
+template <int D>
+struct Intersection_vertex
+{
+  std::uint32_t face_id;
+  std::int8_t i, j;        // axes of the grid edge, i < j
+  std::int8_t orientation; // sign of the triangle's orientation projected on (i, j)
+  bool has_cell = false;
+  std::array<std::int32_t, D> cell; // lattice cell; cell[i] = k, cell[j] = m always
+  std::array<std::uint32_t, 4> link = {{no_link, no_link, no_link, no_link}}; // 4*vertex+slot
+
+  std::int32_t k() const { return cell[i]; }
+  std::int32_t m() const { return cell[j]; }
+};
+
+template <class TriangleMesh, class RangeMap, class FaceIndexMap, class VertexIndexMap,
+          class Traits>
+class Grid_tracer
+{
+  using GT = boost::graph_traits<TriangleMesh>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using face_descriptor = typename GT::face_descriptor;
+
+public:
+  static constexpr int D = Traits::dimension;
+  using Point_d = typename Traits::Point_d;
+  using Vertex = Intersection_vertex<D>;
+
+  Grid_tracer(const TriangleMesh& tm, RangeMap range_map, FaceIndexMap face_index,
+              VertexIndexMap vertex_index, const Point_d& origin, double cell_size,
+              std::size_t maximum_vertices, const Traits& traits)
+    : tm_(tm), range_map_(range_map), face_index_(face_index), vertex_index_(vertex_index),
+      origin_(origin), cell_size_(cell_size), maximum_vertices_(maximum_vertices),
+      predicates_(traits), mapped_(num_vertices(tm), 0),
+      u_(new Point_d[num_vertices(tm)]), face_visited_(num_faces(tm), 0),
+      face_of_id_(num_faces(tm))
+  {}
+
+  // ---------------------------------------------------------------- results
+  const std::vector<Vertex>& vertices() const { return vertices_; }
+  face_descriptor face_of(const Vertex& v) const { return face_of_id_[v.face_id]; }
+  std::size_t number_of_mapped_vertices() const { return number_of_mapped_; }
+  std::size_t number_of_visited_faces() const { return number_of_visited_faces_; }
+  std::size_t number_of_tracing_steps() const { return tracing_steps_; }
+
+  // ---------------------------------------------------------------- seeding
+  /// Finds every intersection vertex of the triangle `f` and queues it.
+  void scan_face(face_descriptor f)
+  {
+    const Triangle t = load(f);
+    std::array<std::int32_t, D> first, last; // lattice levels strictly crossed, per axis
+    int crossed_axes[D];
+    int number_of_crossed_axes = 0;
+    for(int q = 0; q < D; ++q) {
+      const double lo = (std::min)({(*t.p[0])[q], (*t.p[1])[q], (*t.p[2])[q]});
+      const double hi = (std::max)({(*t.p[0])[q], (*t.p[1])[q], (*t.p[2])[q]});
+      // level k + eps lies strictly between lo and hi iff ceil(lo) <= k <= ceil(hi) - 1
+      first[q] = std::int32_t(std::ceil(lo));
+      last[q] = std::int32_t(std::ceil(hi)) - 1;
+      if(first[q] <= last[q])
+        crossed_axes[number_of_crossed_axes++] = q;
+    }
+    for(int a = 0; a < number_of_crossed_axes; ++a)
+      for(int b = a + 1; b < number_of_crossed_axes; ++b) {
+        const int i = crossed_axes[a], j = crossed_axes[b];
+        for(std::int32_t k = first[i]; k <= last[i]; ++k)
+          for(std::int32_t m = first[j]; m <= last[j]; ++m) {
+            const int o = predicates_.grid_edge_orientation(*t.p[0], *t.p[1], *t.p[2], i, j,
+                                                            double(k), double(m));
+            if(o != 0)
+              find_or_create(t.f, t.face_id, i, j, k, m, o, /*queue*/ true);
+          }
+      }
+  }
+
+  /// Scans the faces reachable from `seed` across edges, nearest first, until one
+  /// holding an intersection vertex is found. Returns false if there is none.
+  bool seed_from(face_descriptor seed)
+  {
+    std::deque<face_descriptor> faces_to_scan;
+    std::vector<face_descriptor> marked;
+    auto mark = [&](face_descriptor f) {
+      std::uint8_t& flag = seed_marks_[get(face_index_, f)];
+      if(flag) return false;
+      flag = 1;
+      marked.push_back(f);
+      return true;
+    };
+    if(seed_marks_.empty())
+      seed_marks_.assign(num_faces(tm_), 0);
+    mark(seed);
+    faces_to_scan.push_back(seed);
+    bool found = false;
+    while(!faces_to_scan.empty() && !found) {
+      const face_descriptor f = faces_to_scan.front();
+      faces_to_scan.pop_front();
+      const std::size_t before = queue_.size();
+      scan_face(f);
+      found = queue_.size() > before;
+      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm_), tm_)) {
+        const halfedge_descriptor o = opposite(h, tm_);
+        if(!is_border(o, tm_) && mark(face(o, tm_)))
+          faces_to_scan.push_back(face(o, tm_));
+      }
+    }
+    for(face_descriptor f : marked)
+      seed_marks_[get(face_index_, f)] = 0;
+    return found;
+  }
+
+  // ---------------------------------------------------------------- tracing
+  /// Traces every arc of every queued vertex; vertices met at arc ends are created
+  /// when `create_at_arc_ends`, and must already exist otherwise (complete scan).
+  void trace(bool create_at_arc_ends)
+  {
+    while(!queue_.empty()) {
+      const std::uint32_t v = queue_.front();
+      queue_.pop_front();
+      if(!vertices_[v].has_cell)
+        compute_cell(v);
+      for(int slot = 0; slot < 4; ++slot)
+        if(vertices_[v].link[slot] == no_link)
+          trace_and_link(v, slot, create_at_arc_ends);
+    }
+  }
+
+private:
+  struct Triangle
+  {
+    face_descriptor f;
+    std::uint32_t face_id;
+    std::array<halfedge_descriptor, 3> h; // h[e] goes from vertex e to vertex e+1
+    std::array<const Point_d*, 3> p;
+  };
+
+  struct Wall
+  {
+    int axis = -1;
+    std::int32_t level = 0;
+    int up = 0; // +1: upper wall of the box in this axis, -1: lower wall
+  };
+
+  // -------------------------------------------------------------- the lazy map
+  const Point_d& u(vertex_descriptor v)
+  {
+    const std::size_t id = get(vertex_index_, v);
+    if(!mapped_[id]) {
+      const Point_d f = get(range_map_, v);
+      Point_d& x = u_[id];
+      for(int q = 0; q < D; ++q) {
+        if(!std::isfinite(f[q]))
+          throw Remeshing_error("the range map gives a NaN or infinite value at input vertex " +
+                                std::to_string(id));
+        x[q] = (f[q] - origin_[q]) / cell_size_;
+        if(!(std::abs(x[q]) < maximum_lattice_coordinate))
+          throw Remeshing_error("the cell size is too small for the range of the map: "
+                                "more than 2^29 cells along one axis");
+      }
+      mapped_[id] = 1;
+      ++number_of_mapped_;
+    }
+    return u_[id];
+  }
+
+  Triangle load(face_descriptor f)
+  {
+    Triangle t;
+    t.f = f;
+    t.face_id = std::uint32_t(get(face_index_, f));
+    t.h[0] = halfedge(f, tm_);
+    t.h[1] = next(t.h[0], tm_);
+    t.h[2] = next(t.h[1], tm_);
+    if(next(t.h[2], tm_) != t.h[0])
+      throw Remeshing_error("the input has a face that is not a triangle (face " +
+                            std::to_string(t.face_id) + ")");
+    t.p[0] = &u(source(t.h[0], tm_));
+    t.p[1] = &u(source(t.h[1], tm_));
+    t.p[2] = &u(source(t.h[2], tm_));
+    if(!face_visited_[t.face_id]) {
+      face_visited_[t.face_id] = 1;
+      ++number_of_visited_faces_;
+    }
+    return t;
+  }
+
+  // -------------------------------------------------------------- vertices
+  std::uint32_t find_or_create(face_descriptor f, std::uint32_t face_id, int i, int j,
+                               std::int32_t k, std::int32_t m, int o, bool queue)
+  {
+    const Vertex_key key{face_id, i, j, k, m};
+    bool inserted = false;
+    const std::uint32_t id = table_.find_or_insert(
+        key, std::uint32_t(vertices_.size()),
+        [this](std::uint32_t id) { return key_of(vertices_[id]); }, inserted);
+    if(!inserted)
+      return id;
+    if(vertices_.size() >= maximum_vertices_)
+      throw Remeshing_error("the output would exceed the cap of " +
+                            std::to_string(maximum_vertices_) +
+                            " vertices: the cell size is too small for this input");
+    Vertex v;
+    v.face_id = face_id;
+    v.i = std::int8_t(i);
+    v.j = std::int8_t(j);
+    v.orientation = std::int8_t(o);
+    v.cell[i] = k;
+    v.cell[j] = m;
+    vertices_.push_back(v);
+    face_of_id_[face_id] = f;
+    if(queue)
+      queue_.push_back(id);
+    return id;
+  }
+
+  static Vertex_key key_of(const Vertex& v) { return {v.face_id, v.i, v.j, v.k(), v.m()}; }
+
+  /// The lattice cell of the vertex in the axes other than its grid edge's:
+  /// floor of its coordinates, decided by exact perturbed predicates.
+  void compute_cell(std::uint32_t id)
+  {
+    Vertex& v = vertices_[id];
+    const Triangle t = load(face_of_id_[v.face_id]);
+    const Point_d &a = *t.p[0], &b = *t.p[1], &c = *t.p[2];
+    // barycentric estimate, only to guess the level; the exact test decides
+    const std::array<double, 3> w = barycentric(t, v.i, v.j, v.k(), v.m());
+    for(int q = 0; q < D; ++q) {
+      if(q == v.i || q == v.j)
+        continue;
+      const double lo = (std::min)({a[q], b[q], c[q]});
+      const double hi = (std::max)({a[q], b[q], c[q]});
+      double guess = w[0] * a[q] + w[1] * b[q] + w[2] * c[q];
+      guess = (std::min)((std::max)(guess, lo), hi);
+      std::int32_t n = std::int32_t(std::floor(guess));
+      auto above = [&](std::int32_t level) {
+        return predicates_.vertex_coordinate_side(a, b, c, v.orientation, v.i, v.j,
+                                                  double(v.k()), double(v.m()), q,
+                                                  double(level)) > 0;
+      };
+      while(!above(n)) --n;
+      while(above(n + 1)) ++n;
+      v.cell[q] = n;
+    }
+    v.has_cell = true;
+  }
+
+  // -------------------------------------------------------------- arcs
+  void trace_and_link(std::uint32_t v, int slot, bool create_at_arc_ends)
+  {
+    std::uint32_t end;
+    int end_slot;
+    trace_arc(v, slot, create_at_arc_ends, end, end_slot);
+    Vertex& w = vertices_[end];
+    if(w.link[end_slot] != no_link)
+      throw std::logic_error("Range_space_remeshing: inconsistent arc (internal error)");
+    vertices_[v].link[slot] = 4 * end + std::uint32_t(end_slot);
+    w.link[end_slot] = 4 * v + std::uint32_t(slot);
+  }
+
+  void trace_arc(std::uint32_t start, int slot, bool create_at_arc_ends,
+                 std::uint32_t& end, int& end_slot)
+  {
+    const Vertex v = vertices_[start]; // copy: vertices_ may grow below
+    // Plane of the arc x_P = level, travel axis T, direction dir.
+    const bool along_i = (slot % 2 == 0);
+    const int P = along_i ? v.j : v.i;
+    const int T = along_i ? v.i : v.j;
+    const int dir = slot < 2 ? 1 : -1;
+    const std::int32_t level = v.cell[P];
+    // sigma: +1 when the side u_P > level lies left of the travel direction.
+    const int sigma = (slot == 0 || slot == 3) ? v.orientation : -v.orientation;
+
+    std::array<std::int32_t, D> lo, hi;
+    for(int q = 0; q < D; ++q) {
+      lo[q] = v.cell[q];
+      hi[q] = v.cell[q] + 1;
+    }
+    if(dir < 0) {
+      lo[T] = v.cell[T] - 1;
+      hi[T] = v.cell[T];
+    }
+
+    face_descriptor f = face_of_id_[v.face_id];
+    const std::size_t maximum_steps = num_faces(tm_) + 1;
+    for(std::size_t step = 0;; ++step) {
+      if(step > maximum_steps)
+        throw std::logic_error("Range_space_remeshing: endless arc (internal error)");
+      ++tracing_steps_;
+      const Triangle t = load(f);
+      const int e = exit_edge(t, P, level, sigma);
+      const Point_d& a = *t.p[e];
+      const Point_d& b = *t.p[(e + 1) % 3];
+
+      Wall first;
+      for(int l = 0; l < D; ++l) {
+        if(l == P)
+          continue;
+        Wall crossed;
+        const bool behind_is_lo = (dir > 0);
+        const bool skip_lo = (step == 0 && l == T && behind_is_lo);
+        const bool skip_hi = (step == 0 && l == T && !behind_is_lo);
+        if(!skip_lo && predicates_.crossing_side(a, b, P, level, l, lo[l]) < 0)
+          crossed = Wall{l, lo[l], -1};
+        else if(!skip_hi && predicates_.crossing_side(a, b, P, level, l, hi[l]) > 0)
+          crossed = Wall{l, hi[l], +1};
+        else
+          continue;
+        if(first.axis < 0 ||
+           predicates_.is_met_first(*t.p[0], *t.p[1], *t.p[2], P, level, crossed.axis,
+                                    crossed.level, first.axis, first.level, first.up))
+          first = crossed;
+      }
+
+      if(first.axis >= 0) {
+        finish_arc(t, P, level, first, lo, create_at_arc_ends, end, end_slot);
+        return;
+      }
+      const halfedge_descriptor across = opposite(t.h[e], tm_);
+      if(is_border(across, tm_))
+        throw Remeshing_error("the input has a border: surfaces with boundary are not "
+                              "supported yet");
+      f = face(across, tm_);
+    }
+  }
+
+  /// The ccw edge of `t` through which an arc in x_P = level leaves, given sigma.
+  int exit_edge(const Triangle& t, int P, std::int32_t level, int sigma) const
+  {
+    int side[3];
+    for(int e = 0; e < 3; ++e)
+      side[e] = Predicates::side((*t.p[e])[P], double(level));
+    for(int e = 0; e < 3; ++e)
+      if(side[e] == -sigma && side[(e + 1) % 3] == sigma)
+        return e;
+    throw std::logic_error("Range_space_remeshing: arc lost its plane (internal error)");
+  }
+
+  void finish_arc(const Triangle& t, int P, std::int32_t level, const Wall& wall,
+                  const std::array<std::int32_t, D>& lo, bool create_at_arc_ends,
+                  std::uint32_t& end, int& end_slot)
+  {
+    const int w = wall.axis;
+    const int i = (std::min)(P, w), j = (std::max)(P, w);
+    const std::int32_t k = (i == P) ? level : wall.level;
+    const std::int32_t m = (i == P) ? wall.level : level;
+    // The arc reaches the end vertex travelling along w towards the wall; leaving
+    // the vertex along it goes the other way, -up.
+    end_slot = (w == i ? 0 : 1) + (wall.up > 0 ? 2 : 0);
+
+    if(create_at_arc_ends) {
+      const int o = predicates_.projected_orientation(*t.p[0], *t.p[1], *t.p[2], i, j);
+      end = find_or_create(t.f, t.face_id, i, j, k, m, o, true);
+    } else {
+      end = table_.find(Vertex_key{t.face_id, std::int8_t(i), std::int8_t(j), k, m},
+                        [this](std::uint32_t id) { return key_of(vertices_[id]); });
+      if(end == no_link)
+        throw std::logic_error("Range_space_remeshing: arc ends at an unscanned vertex "
+                               "(internal error)");
+    }
+    CGAL_assertion(predicates_.grid_edge_orientation(*t.p[0], *t.p[1], *t.p[2], i, j,
+                                                     double(k), double(m)) != 0);
+    // The end vertex lies in the arc's box, strictly inside in every other axis.
+    Vertex& ev = vertices_[end];
+    if(!ev.has_cell) {
+      for(int q = 0; q < D; ++q)
+        if(q != i && q != j)
+          ev.cell[q] = lo[q];
+      ev.has_cell = true;
+    } else {
+      CGAL_assertion_code(for(int q = 0; q < D; ++q))
+      CGAL_assertion(q == i || q == j || ev.cell[q] == lo[q]);
+    }
+  }
+
+  std::array<double, 3> barycentric(const Triangle& t, int i, int j, double k, double m) const
+  {
+    const Point_d &a = *t.p[0], &b = *t.p[1], &c = *t.p[2];
+    const double det = (b[i] - a[i]) * (c[j] - a[j]) - (b[j] - a[j]) * (c[i] - a[i]);
+    double s = ((k - a[i]) * (c[j] - a[j]) - (m - a[j]) * (c[i] - a[i])) / det;
+    double r = ((b[i] - a[i]) * (m - a[j]) - (b[j] - a[j]) * (k - a[i])) / det;
+    if(!std::isfinite(s) || !std::isfinite(r)) {
+      s = r = 1. / 3.;
+    }
+    s = (std::min)((std::max)(s, 0.), 1.);
+    r = (std::min)((std::max)(r, 0.), 1. - s);
+    return {{1. - s - r, s, r}};
+  }
+
+public:
+  /// Barycentric coordinates of the intersection vertex in its triangle, in the
+  /// order source(halfedge(f)), target(halfedge(f)), target(next(halfedge(f))).
+  std::array<double, 3> barycentric_coordinates(const Vertex& v)
+  {
+    const Triangle t = load(face_of_id_[v.face_id]);
+    return barycentric(t, v.i, v.j, double(v.k()), double(v.m()));
+  }
+
+  /// The lattice coordinates of a mapped input vertex (for checks).
+  const Point_d& range_coordinates(vertex_descriptor v) { return u(v); }
+
+private:
+  using Predicates = Perturbed_predicates<Traits>;
+
+  const TriangleMesh& tm_;
+  RangeMap range_map_;
+  FaceIndexMap face_index_;
+  VertexIndexMap vertex_index_;
+  Point_d origin_;
+  double cell_size_;
+  std::size_t maximum_vertices_;
+  Predicates predicates_;
+
+  std::vector<std::uint8_t> mapped_;
+  std::unique_ptr<Point_d[]> u_; // left uninitialised: filled on first use only
+  std::size_t number_of_mapped_ = 0;
+  std::vector<std::uint8_t> face_visited_;
+  std::size_t number_of_visited_faces_ = 0;
+  std::vector<std::uint8_t> seed_marks_;
+  std::size_t tracing_steps_ = 0;
+
+  std::vector<Vertex> vertices_;
+  std::vector<face_descriptor> face_of_id_;
+  Vertex_table table_;
+  std::deque<std::uint32_t> queue_;
+};
+
+} // namespace internal
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_INTERNAL_GRID_TRACER_H

@@ -1,0 +1,297 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_PRIMAL_COMPLEX_H
+#define CGAL_RANGE_SPACE_REMESHING_INTERNAL_PRIMAL_COMPLEX_H
+
+// Faces of the primal remesh from the rotation system alone, no geometry.
+//
+// Halfedge 4*v+s leaves intersection vertex v by its slot s; its twin is the link
+// the tracer stored. The counter-clockwise order of the slots around v is 0,1,2,3
+// when the vertex's projected orientation is positive, 3,2,1,0 otherwise. A face is
+// an orbit of next(h) = the outgoing halfedge at target(h) just before twin(h) in
+// counter-clockwise order; faces then have the input's orientation.
+//
+// Faces a polygon mesh cannot hold are repaired, and counted:
+// * a digon (two vertices joined by two arcs around one face) has its two arcs
+//   merged into one edge; the two vertices get valence 3, V - E + F is unchanged;
+// * a face whose boundary visits a vertex twice is split by a chord across the pinch;
+// * a piece that still has a face of degree below 3 is dropped.
+
+#include <algorithm>
+#include <cstdint>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+namespace internal {
+
+class Primal_complex
+{
+public:
+  struct Halfedge
+  {
+    std::uint32_t target;
+    std::uint32_t twin;
+    std::uint32_t next;
+    std::uint32_t face;
+  };
+
+  /// `links[4*v+s]` is the twin of halfedge 4*v+s, `positive[v]` the sign of the
+  /// projected orientation of vertex v.
+  Primal_complex(const std::vector<std::uint32_t>& links, const std::vector<bool>& positive)
+    : number_of_vertices_(std::uint32_t(positive.size()))
+  {
+    build_rotation(links, positive);
+    trace_faces();
+    merge_digons();
+    to_halfedges();
+    split_non_simple_faces();
+    drop_broken_pieces();
+  }
+
+  std::uint32_t number_of_vertices() const { return number_of_vertices_; }
+  const std::vector<Halfedge>& halfedges() const { return halfedges_; }
+  /// one halfedge per face, or no_face for removed faces
+  const std::vector<std::uint32_t>& face_halfedges() const { return face_halfedge_; }
+  /// whether vertex v is part of the output
+  bool is_kept(std::uint32_t v) const { return kept_vertex_[v]; }
+
+  std::size_t number_of_digons() const { return digons_; }
+  std::size_t number_of_non_simple_faces() const { return non_simple_faces_; }
+  std::size_t number_of_dropped_pieces() const { return dropped_pieces_; }
+
+  static constexpr std::uint32_t none = std::uint32_t(-1);
+
+private:
+  // ---------------------------------------------------------- rotation system
+  void build_rotation(const std::vector<std::uint32_t>& links,
+                      const std::vector<bool>& positive)
+  {
+    const std::size_t n = links.size();
+    twin_ = links;
+    ccw_next_.resize(n);
+    ccw_prev_.resize(n);
+    alive_.assign(n, 1);
+    for(std::uint32_t v = 0; v < number_of_vertices_; ++v)
+      for(std::uint32_t s = 0; s < 4; ++s) {
+        const std::uint32_t forward = 4 * v + (s + 1) % 4, backward = 4 * v + (s + 3) % 4;
+        ccw_next_[4 * v + s] = positive[v] ? forward : backward;
+        ccw_prev_[4 * v + s] = positive[v] ? backward : forward;
+      }
+  }
+
+  std::uint32_t face_next(std::uint32_t h) const { return ccw_prev_[twin_[h]]; }
+
+  void trace_faces()
+  {
+    face_of_.assign(twin_.size(), none);
+    for(std::uint32_t h = 0; h < twin_.size(); ++h) {
+      if(face_of_[h] != none)
+        continue;
+      const std::uint32_t f = std::uint32_t(orbit_start_.size());
+      orbit_start_.push_back(h);
+      std::uint32_t degree = 0;
+      for(std::uint32_t g = h; face_of_[g] == none; g = face_next(g)) {
+        face_of_[g] = f;
+        ++degree;
+      }
+      orbit_degree_.push_back(degree);
+    }
+  }
+
+  void remove_from_rotation(std::uint32_t h)
+  {
+    ccw_next_[ccw_prev_[h]] = ccw_next_[h];
+    ccw_prev_[ccw_next_[h]] = ccw_prev_[h];
+    alive_[h] = 0;
+  }
+
+  void merge_digons()
+  {
+    for(std::uint32_t f = 0; f < orbit_start_.size(); ++f) {
+      if(orbit_degree_[f] != 2)
+        continue;
+      const std::uint32_t h1 = orbit_start_[f], h2 = face_next(h1);
+      const std::uint32_t t1 = twin_[h1], t2 = twin_[h2];
+      // The two arcs must bound different faces on their other sides, or the
+      // merged edge would have one face on both sides.
+      if(t1 == h2 || face_of_[t1] == face_of_[t2])
+        continue;
+      twin_[t1] = t2;
+      twin_[t2] = t1;
+      remove_from_rotation(h1);
+      remove_from_rotation(h2);
+      orbit_degree_[f] = 0;
+      ++digons_;
+    }
+  }
+
+  // ---------------------------------------------------------- explicit halfedges
+  void to_halfedges()
+  {
+    std::vector<std::uint32_t> new_id(twin_.size(), none);
+    for(std::uint32_t h = 0; h < twin_.size(); ++h)
+      if(alive_[h]) {
+        new_id[h] = std::uint32_t(halfedges_.size());
+        halfedges_.push_back(Halfedge{twin_[h] / 4, none, none, none});
+      }
+    std::vector<std::uint32_t> face_id(orbit_start_.size(), none);
+    for(std::uint32_t h = 0; h < twin_.size(); ++h) {
+      if(!alive_[h])
+        continue;
+      Halfedge& he = halfedges_[new_id[h]];
+      he.twin = new_id[twin_[h]];
+      he.next = new_id[face_next(h)];
+      std::uint32_t& f = face_id[face_of_[h]];
+      if(f == none) {
+        f = std::uint32_t(face_halfedge_.size());
+        face_halfedge_.push_back(new_id[h]);
+      }
+      he.face = f;
+    }
+    // the rotation system is no longer needed
+    twin_ = {}; ccw_next_ = {}; ccw_prev_ = {}; alive_ = {}; face_of_ = {};
+  }
+
+  std::uint32_t source(std::uint32_t h) const { return halfedges_[halfedges_[h].twin].target; }
+
+  enum Pinch { SIMPLE, SPLIT, UNSPLITTABLE };
+
+  /// Splits face f at one pinch vertex by a chord.
+  Pinch split_at_pinch(std::uint32_t f)
+  {
+    // first pinch: a vertex x entered twice, by halfedges `in_1` then `in_2`
+    last_visit_.resize(number_of_vertices_, none);
+    std::vector<std::uint32_t> cycle;
+    std::uint32_t h = face_halfedge_[f];
+    do {
+      cycle.push_back(h);
+      h = halfedges_[h].next;
+    } while(h != face_halfedge_[f]);
+    std::uint32_t in_1 = none, in_2 = none;
+    for(std::uint32_t g : cycle) {
+      std::uint32_t& seen = last_visit_[halfedges_[g].target];
+      if(seen != none && in_1 == none) {
+        in_1 = seen;
+        in_2 = g;
+      }
+      seen = g;
+    }
+    for(std::uint32_t g : cycle)
+      last_visit_[halfedges_[g].target] = none;
+    if(in_1 == none)
+      return SIMPLE;
+    if(in_2 == halfedges_[in_1].next || in_1 == halfedges_[in_2].next)
+      return UNSPLITTABLE; // x -> x: no chord splits it (arcs never produce it)
+    // The face is x, A1..Ap, x, B1..Bq with in_1 = Ap->x... pick the ear
+    // (A_p, x, B_1): chord from B_1 to A_p, where A_p = source(in_2) and B_1 =
+    // target(next(in_2)).
+    const std::uint32_t out_2 = halfedges_[in_2].next; // x -> B1
+    const std::uint32_t a = source(in_2), b = halfedges_[out_2].target;
+    if(a == b)
+      return UNSPLITTABLE;
+    const std::uint32_t before_a = prev_in_face(in_2); // .. -> A_p
+    const std::uint32_t after_b = halfedges_[out_2].next;
+    // new halfedges: chord b -> a closes the ear, a -> b continues the rest
+    const std::uint32_t ear_chord = std::uint32_t(halfedges_.size());
+    const std::uint32_t rest_chord = ear_chord + 1;
+    const std::uint32_t ear = std::uint32_t(face_halfedge_.size());
+    halfedges_.push_back(Halfedge{a, rest_chord, in_2, ear});
+    halfedges_.push_back(Halfedge{b, ear_chord, after_b, f});
+    face_halfedge_.push_back(in_2);
+    halfedges_[in_2].face = ear;
+    halfedges_[out_2].face = ear;
+    halfedges_[out_2].next = ear_chord;
+    halfedges_[before_a].next = rest_chord;
+    face_halfedge_[f] = rest_chord;
+    ++non_simple_faces_;
+    return SPLIT;
+  }
+
+  std::uint32_t prev_in_face(std::uint32_t h) const
+  {
+    std::uint32_t g = h;
+    while(halfedges_[g].next != h)
+      g = halfedges_[g].next;
+    return g;
+  }
+
+  void split_non_simple_faces()
+  {
+    for(std::uint32_t f = 0; f < face_halfedge_.size(); ++f) {
+      Pinch result;
+      while((result = split_at_pinch(f)) == SPLIT) {
+      }
+      if(result == UNSPLITTABLE)
+        unsplittable_faces_.push_back(f);
+    }
+  }
+
+  // ---------------------------------------------------------- broken pieces
+  std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) const
+  {
+    while(parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
+  }
+
+  void drop_broken_pieces()
+  {
+    std::vector<std::uint32_t> parent(number_of_vertices_);
+    std::iota(parent.begin(), parent.end(), 0u);
+    for(std::uint32_t h = 0; h < halfedges_.size(); ++h)
+      parent[find_root(parent, halfedges_[h].target)] = find_root(parent, source(h));
+    std::vector<std::uint8_t> broken(number_of_vertices_, 0), has_halfedge(number_of_vertices_, 0);
+    for(std::uint32_t h = 0; h < halfedges_.size(); ++h)
+      has_halfedge[halfedges_[h].target] = 1;
+    for(std::uint32_t f : unsplittable_faces_)
+      broken[find_root(parent, halfedges_[face_halfedge_[f]].target)] = 1;
+    for(std::uint32_t f = 0; f < face_halfedge_.size(); ++f) {
+      const std::uint32_t h = face_halfedge_[f];
+      const std::uint32_t h2 = halfedges_[halfedges_[h].next].next;
+      const bool too_small = (h2 == h) || (halfedges_[h].next == h);
+      const bool bad = too_small || halfedges_[h].face == halfedges_[halfedges_[h].twin].face;
+      if(bad)
+        broken[find_root(parent, halfedges_[h].target)] = 1;
+    }
+    kept_vertex_.assign(number_of_vertices_, false);
+    std::vector<std::uint8_t> counted(number_of_vertices_, 0);
+    for(std::uint32_t v = 0; v < number_of_vertices_; ++v) {
+      if(!has_halfedge[v])
+        continue;
+      const std::uint32_t r = find_root(parent, v);
+      kept_vertex_[v] = !broken[r];
+      if(broken[r] && !counted[r]) {
+        counted[r] = 1;
+        ++dropped_pieces_;
+      }
+    }
+    for(std::uint32_t f = 0; f < face_halfedge_.size(); ++f)
+      if(!kept_vertex_[halfedges_[face_halfedge_[f]].target])
+        face_halfedge_[f] = none;
+  }
+
+  std::uint32_t number_of_vertices_;
+  // rotation system
+  std::vector<std::uint32_t> twin_, ccw_next_, ccw_prev_;
+  std::vector<std::uint8_t> alive_;
+  std::vector<std::uint32_t> face_of_, orbit_start_, orbit_degree_;
+  // explicit halfedges
+  std::vector<Halfedge> halfedges_;
+  std::vector<std::uint32_t> face_halfedge_;
+  std::vector<bool> kept_vertex_;
+  std::vector<std::uint32_t> last_visit_;
+  std::vector<std::uint32_t> unsplittable_faces_;
+
+  std::size_t digons_ = 0, non_simple_faces_ = 0, dropped_pieces_ = 0;
+};
+
+} // namespace internal
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_INTERNAL_PRIMAL_COMPLEX_H

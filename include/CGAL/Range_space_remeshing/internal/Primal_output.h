@@ -1,0 +1,167 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_PRIMAL_OUTPUT_H
+#define CGAL_RANGE_SPACE_REMESHING_INTERNAL_PRIMAL_OUTPUT_H
+
+// Writes the primal complex into a MutableFaceGraph halfedge by halfedge, so that
+// no vertex-pair lookup is needed (and parallel edges, which the complex may
+// legitimately have, are kept apart). Vertex geometry is sampled from the input
+// triangle at the crossing point.
+
+#include <CGAL/Range_space_remeshing/Statistics.h>
+#include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+namespace internal {
+
+/// Unit vertex normals of the input, computed on first use only.
+template <class TriangleMesh, class VPM, class VertexIndexMap>
+class Lazy_vertex_normals
+{
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+
+public:
+  Lazy_vertex_normals(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex_index)
+    : tm_(tm), vpm_(vpm), vertex_index_(vertex_index)
+  {}
+
+  std::array<double, 3> operator()(vertex_descriptor v)
+  {
+    const std::size_t id = get(vertex_index_, v);
+    if(known_.empty()) { // allocated on first use: no cost when normals are not asked for
+      normals_.resize(num_vertices(tm_));
+      known_.assign(num_vertices(tm_), 0);
+    }
+    if(!known_[id]) {
+      const auto n = CGAL::Polygon_mesh_processing::compute_vertex_normal(
+          v, tm_, CGAL::parameters::vertex_point_map(vpm_));
+      normals_[id] = {{CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z())}};
+      known_[id] = 1;
+    }
+    return normals_[id];
+  }
+
+private:
+  const TriangleMesh& tm_;
+  VPM vpm_;
+  std::vector<std::array<double, 3>> normals_;
+  std::vector<std::uint8_t> known_;
+  VertexIndexMap vertex_index_;
+};
+
+template <class TriangleMesh, class VPM, class VertexIndexMap, class Tracer, class PolygonMesh,
+          class NamedParametersOut>
+void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex_index, Tracer& tracer,
+                          const Primal_complex& complex, PolygonMesh& out,
+                          const NamedParametersOut& np_out, Statistics& stats)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  using out_vertex = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  using out_halfedge = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
+  using out_face = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+
+  using Out_VPM = typename GetVertexPointMap<PolygonMesh, NamedParametersOut>::type;
+  Out_VPM out_vpm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
+                                     get_property_map(CGAL::vertex_point, out));
+  using Out_point = typename boost::property_traits<Out_VPM>::value_type;
+  using Out_kernel = typename CGAL::Kernel_traits<Out_point>::Kernel;
+  using Out_vector = typename Out_kernel::Vector_3;
+
+  constexpr bool wants_normals =
+      !CGAL::parameters::is_default_parameter<NamedParametersOut,
+                                              CGAL::internal_np::vertex_normal_map_t>::value;
+  auto normal_map = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_normal_map),
+                                     CGAL::Constant_property_map<out_vertex, Out_vector>());
+  Lazy_vertex_normals<TriangleMesh, VPM, VertexIndexMap> input_normals(tm, vpm, vertex_index);
+
+  const auto& vertices = tracer.vertices();
+  const std::uint32_t none = Primal_complex::none;
+  std::vector<out_vertex> vertex_of(vertices.size());
+  std::size_t number_of_vertices = 0;
+  for(std::uint32_t v = 0; v < vertices.size(); ++v) {
+    if(!complex.is_kept(v))
+      continue;
+    const auto w = tracer.barycentric_coordinates(vertices[v]);
+    const auto h0 = halfedge(tracer.face_of(vertices[v]), tm);
+    const auto corners = {source(h0, tm), target(h0, tm), target(next(h0, tm), tm)};
+    std::array<double, 3> p = {{0, 0, 0}}, n = {{0, 0, 0}};
+    int c = 0;
+    for(auto corner : corners) {
+      const auto& q = get(vpm, corner);
+      p[0] += w[c] * CGAL::to_double(q.x());
+      p[1] += w[c] * CGAL::to_double(q.y());
+      p[2] += w[c] * CGAL::to_double(q.z());
+      if constexpr(wants_normals) {
+        const auto nc = input_normals(corner);
+        for(int d = 0; d < 3; ++d)
+          n[d] += w[c] * nc[d];
+      }
+      ++c;
+    }
+    const out_vertex ov = add_vertex(out);
+    put(out_vpm, ov, Out_point(p[0], p[1], p[2]));
+    if constexpr(wants_normals) {
+      const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      const double scale = length > 0 ? 1. / length : 0.; // zero-area corners: no normal
+      put(normal_map, ov, Out_vector(n[0] * scale, n[1] * scale, n[2] * scale));
+    }
+    vertex_of[v] = ov;
+    ++number_of_vertices;
+  }
+
+  const auto& halfedges = complex.halfedges();
+  std::vector<out_halfedge> halfedge_of(halfedges.size());
+  std::vector<std::uint8_t> done(halfedges.size(), 0);
+  std::size_t number_of_edges = 0;
+  for(std::uint32_t h = 0; h < halfedges.size(); ++h) {
+    if(done[h] || !complex.is_kept(halfedges[h].target))
+      continue;
+    const auto e = add_edge(out);
+    halfedge_of[h] = halfedge(e, out);
+    halfedge_of[halfedges[h].twin] = opposite(halfedge(e, out), out);
+    done[h] = done[halfedges[h].twin] = 1;
+    ++number_of_edges;
+  }
+  std::size_t number_of_faces = 0;
+  for(std::uint32_t first : complex.face_halfedges()) {
+    if(first == none)
+      continue;
+    const out_face f = add_face(out);
+    set_halfedge(f, halfedge_of[first], out);
+    std::uint32_t h = first;
+    do {
+      const out_halfedge oh = halfedge_of[h];
+      const out_vertex t = vertex_of[halfedges[h].target];
+      set_face(oh, f, out);
+      set_target(oh, t, out);
+      set_next(oh, halfedge_of[halfedges[h].next], out);
+      set_halfedge(t, oh, out);
+      h = halfedges[h].next;
+    } while(h != first);
+    ++number_of_faces;
+  }
+  stats.output_vertices = number_of_vertices;
+  stats.output_edges = number_of_edges;
+  stats.output_faces = number_of_faces;
+}
+
+} // namespace internal
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_INTERNAL_PRIMAL_OUTPUT_H

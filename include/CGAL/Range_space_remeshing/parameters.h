@@ -1,0 +1,74 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_PARAMETERS_H
+#define CGAL_RANGE_SPACE_REMESHING_PARAMETERS_H
+
+// Named parameters of the package.
+//
+// CGAL's list of named-parameter tags is closed, so a package outside CGAL cannot
+// add a chainable `.range_map()` member. The package therefore
+// * reuses CGAL's tags where the meaning fits: `grid_spacing` (the cell size),
+//   `seeding_method`, `maximum_number` (cap on output vertices), `geom_traits`,
+//   `vertex_point_map`, `vertex_normal_map`;
+// * adds its own tags as free functions that start a pack, onto which CGAL's
+//   tags chain as usual: `range_map(f).grid_spacing(h)`. Each of them optionally
+//   takes an existing pack to extend: `grid_origin(o, range_map(f).grid_spacing(h))`.
+
+#include <CGAL/Named_function_parameters.h>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+
+/// How intersection vertices are found before tracing.
+enum class Seeding_method
+{
+  /// Scan every input triangle for grid edges: finds every piece of the
+  /// intersection, linear in the input size. The default.
+  COMPLETE_SCAN,
+  /// Start from one seed per input connected component (or from the faces given
+  /// by `seed_faces()`) and trace from there: only the triangles the arcs cross are
+  /// mapped, so the cost is sublinear in the input. May miss output pieces that are
+  /// not connected to a seed.
+  SEEDED
+};
+
+namespace internal_np {
+enum range_map_t { range_map };
+enum grid_origin_t { grid_origin };
+enum seed_faces_t { seed_faces };
+} // namespace internal_np
+
+namespace parameters {
+
+#define CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(NAME)                              \
+  template <class T>                                                               \
+  CGAL::Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& value)     \
+  {                                                                                \
+    return CGAL::Named_function_parameters<T, internal_np::NAME##_t>(value);        \
+  }                                                                                \
+  template <class T, class NP_T, class NP_Tag, class NP_Base>                      \
+  CGAL::Named_function_parameters<T, internal_np::NAME##_t,                        \
+                                  CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>> \
+  NAME(const T& value, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& base) \
+  {                                                                                \
+    return {value, base};                                                          \
+  }
+
+/// The map f: a readable property map, vertex -> point of the range space
+/// (`std::array<double, D>`). Default: the identity (vertex positions, D = 3).
+CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(range_map)
+/// Origin of the grid in the range space (`std::array<double, D>`). Default: 0.
+CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(grid_origin)
+/// Faces to start from in `Seeding_method::SEEDED` (a range of face descriptors).
+CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(seed_faces)
+
+#undef CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER
+
+} // namespace parameters
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_PARAMETERS_H

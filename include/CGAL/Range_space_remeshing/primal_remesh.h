@@ -1,0 +1,284 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_PRIMAL_REMESH_H
+#define CGAL_RANGE_SPACE_REMESHING_PRIMAL_REMESH_H
+
+#include <CGAL/Range_space_remeshing/Identity_range_map.h>
+#include <CGAL/Range_space_remeshing/Range_space_traits.h>
+#include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/Statistics.h>
+#include <CGAL/Range_space_remeshing/parameters.h>
+#include <CGAL/Range_space_remeshing/internal/Grid_tracer.h>
+#include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
+#include <CGAL/Range_space_remeshing/internal/Primal_output.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <tuple>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+
+namespace internal {
+
+template <class RangeMap>
+constexpr int range_dimension()
+{
+  using Value = std::decay_t<typename boost::property_traits<RangeMap>::value_type>;
+  return int(std::tuple_size<Value>::value);
+}
+
+inline double milliseconds_since(std::chrono::steady_clock::time_point& start)
+{
+  const auto now = std::chrono::steady_clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - start).count();
+  start = now;
+  return ms;
+}
+
+/// One seed face per connected component of the input (connectivity only: the map
+/// is not evaluated here).
+template <class TriangleMesh, class FaceIndexMap>
+std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
+one_face_per_component(const TriangleMesh& tm, FaceIndexMap face_index)
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  std::vector<face_descriptor> seeds, stack;
+  std::vector<std::uint8_t> seen(num_faces(tm), 0);
+  for(face_descriptor f : faces(tm)) {
+    if(seen[get(face_index, f)])
+      continue;
+    seeds.push_back(f);
+    seen[get(face_index, f)] = 1;
+    stack.push_back(f);
+    while(!stack.empty()) {
+      const face_descriptor g = stack.back();
+      stack.pop_back();
+      for(auto h : CGAL::halfedges_around_face(halfedge(g, tm), tm)) {
+        const auto o = opposite(h, tm);
+        if(is_border(o, tm))
+          continue;
+        const face_descriptor n = face(o, tm);
+        if(!seen[get(face_index, n)]) {
+          seen[get(face_index, n)] = 1;
+          stack.push_back(n);
+        }
+      }
+    }
+  }
+  return seeds;
+}
+
+} // namespace internal
+
+namespace internal {
+
+struct No_inspection
+{
+  template <class Tracer, class Complex>
+  void operator()(Tracer&, const Complex&) const {}
+};
+
+// The whole run; `inspect(tracer, complex)` sees the intermediate structures
+// before the output is written (tests check the invariants there).
+template <class TriangleMesh, class PolygonMesh, class NamedParametersIn,
+          class NamedParametersOut, class Inspector>
+Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
+                              const NamedParametersIn& np_in,
+                              const NamedParametersOut& np_out, const Inspector& inspect)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+
+  auto start = std::chrono::steady_clock::now();
+  const auto start_total = start;
+
+  using VPM = typename GetVertexPointMap<TriangleMesh, NamedParametersIn>::const_type;
+  const VPM vpm = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+  using Default_map = Identity_range_map<VPM>;
+  using Range_map = typename CGAL::internal_np::Lookup_named_param_def<
+      internal_np::range_map_t, NamedParametersIn, Default_map>::type;
+  const Range_map range_map =
+      choose_parameter(get_parameter(np_in, internal_np::range_map), Default_map(vpm));
+  constexpr int D = range_dimension<Range_map>();
+  using Default_traits = Range_space_traits<D>;
+  using Traits = typename CGAL::internal_np::Lookup_named_param_def<
+      CGAL::internal_np::geom_traits_t, NamedParametersIn, Default_traits>::type;
+  static_assert(Traits::dimension == D,
+                "the traits' dimension differs from the range map's dimension");
+  const Traits traits = choose_parameter<Traits>(get_parameter(np_in, CGAL::internal_np::geom_traits));
+  using Point_d = typename Traits::Point_d;
+
+  const double cell_size = choose_parameter(get_parameter(np_in, CGAL::internal_np::grid_spacing), 1.);
+  const Point_d origin = choose_parameter(get_parameter(np_in, internal_np::grid_origin), Point_d{});
+  const Seeding_method seeding = choose_parameter(
+      get_parameter(np_in, CGAL::internal_np::seeding_method), Seeding_method::COMPLETE_SCAN);
+  const std::size_t maximum_vertices = std::size_t(choose_parameter(
+      get_parameter(np_in, CGAL::internal_np::maximum_number), std::size_t(50000000)));
+
+  if(!(cell_size > 0) || !std::isfinite(cell_size))
+    throw Remeshing_error("the cell size must be a positive finite number");
+  for(double x : origin)
+    if(!std::isfinite(x))
+      throw Remeshing_error("the grid origin must be finite");
+  if(num_faces(tm) == 0)
+    throw Remeshing_error("the input mesh has no face");
+  if(seeding == Seeding_method::COMPLETE_SCAN) {
+    if(!CGAL::is_triangle_mesh(tm))
+      throw Remeshing_error("the input mesh has faces that are not triangles");
+    if(!CGAL::is_closed(tm))
+      throw Remeshing_error("the input has a border: surfaces with boundary are not "
+                            "supported yet");
+  }
+
+  auto face_index = CGAL::get_initialized_face_index_map(tm, np_in);
+  auto vertex_index = CGAL::get_initialized_vertex_index_map(tm, np_in);
+  using Tracer = Grid_tracer<TriangleMesh, Range_map, decltype(face_index),
+                                       decltype(vertex_index), Traits>;
+  Tracer tracer(tm, range_map, face_index, vertex_index, origin, cell_size,
+                maximum_vertices, traits);
+
+  Statistics stats;
+  stats.input_vertices = num_vertices(tm);
+  stats.input_faces = num_faces(tm);
+  const bool seeded = (seeding == Seeding_method::SEEDED);
+  if(!seeded) {
+    for(auto f : faces(tm))
+      tracer.scan_face(f);
+    stats.seeds = tracer.vertices().size();
+  } else {
+    auto seed_range = choose_parameter(get_parameter(np_in, internal_np::seed_faces),
+                                       one_face_per_component(tm, face_index));
+    for(auto f : seed_range)
+      stats.seeds += tracer.seed_from(f) ? 1 : 0;
+  }
+  stats.time_seeding_ms = milliseconds_since(start);
+
+  tracer.trace(/*create vertices at arc ends*/ seeded);
+  stats.time_tracing_ms = milliseconds_since(start);
+
+  const auto& vertices = tracer.vertices();
+  std::vector<std::uint32_t> links(4 * vertices.size());
+  std::vector<bool> positive(vertices.size());
+  for(std::size_t v = 0; v < vertices.size(); ++v) {
+    std::copy(vertices[v].link.begin(), vertices[v].link.end(), links.begin() + 4 * v);
+    positive[v] = vertices[v].orientation > 0;
+  }
+  const Primal_complex complex(links, positive);
+  stats.time_faces_ms = milliseconds_since(start);
+  inspect(tracer, complex);
+
+  write_primal_complex(tm, vpm, vertex_index, tracer, complex, out, np_out, stats);
+  stats.time_output_ms = milliseconds_since(start);
+
+  stats.mapped_vertices = tracer.number_of_mapped_vertices();
+  stats.visited_faces = tracer.number_of_visited_faces();
+  stats.tracing_steps = tracer.number_of_tracing_steps();
+  stats.intersection_vertices = vertices.size();
+  stats.digons = complex.number_of_digons();
+  stats.non_simple_faces = complex.number_of_non_simple_faces();
+  stats.dropped_pieces = complex.number_of_dropped_pieces();
+  stats.time_total_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_total).count();
+  return stats;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
+computes the primal remesh of `tm` under the range map f: the intersection of the
+mapped surface f(`tm`) with a uniform grid of \f$\mathbb{R}^D\f$, and appends it to
+`out`.
+
+Every output vertex is where the mapped surface crosses a grid edge (a
+codimension-2 face of the grid); it has valence 4, except the two ends of a merged
+digon (valence 3, counted in `Statistics::digons`). Every output face is the piece
+of the surface inside one grid cell, so every coordinate of f varies by at most the
+cell size over it. Positions (and, on request, normals) of output vertices are
+sampled from `tm` at the crossing points; f is never inverted.
+
+All combinatorial decisions are exact predicates on the mapped input coordinates,
+with a symbolic perturbation of the grid for degenerate positions, so the result
+is a closed 2-manifold whenever `tm` is one, and does not depend on rounding.
+
+\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeGraph`, closed
+        triangle mesh.
+\tparam PolygonMesh a model of `MutableFaceGraph`.
+
+\param tm the input mesh: closed, 2-manifold, triangles only.
+\param out receives the remesh (appended).
+\param np_in optional named parameters for `tm`:
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{range_map}
+      \cgalParamDescription{the map f: vertex -> point of the range space}
+      \cgalParamType{a readable property map with `std::array<double, D>` values, 3 <= D <= 16}
+      \cgalParamDefault{`Identity_range_map` of the vertex point map (D = 3)}
+      \cgalParamExtra{evaluated lazily, once per input vertex of a visited triangle}
+    \cgalParamNEnd
+    \cgalParamNBegin{grid_spacing}
+      \cgalParamDescription{the cell size h of the grid, in units of f}
+      \cgalParamType{double}
+      \cgalParamDefault{1}
+    \cgalParamNEnd
+    \cgalParamNBegin{grid_origin}
+      \cgalParamDescription{a grid vertex}
+      \cgalParamType{`std::array<double, D>`}
+      \cgalParamDefault{the origin}
+    \cgalParamNEnd
+    \cgalParamNBegin{seeding_method}
+      \cgalParamDescription{`Seeding_method::COMPLETE_SCAN` (finds every piece, linear) or
+                            `Seeding_method::SEEDED` (sublinear)}
+      \cgalParamDefault{`Seeding_method::COMPLETE_SCAN`}
+    \cgalParamNEnd
+    \cgalParamNBegin{seed_faces}
+      \cgalParamDescription{faces to start from in seeded mode}
+      \cgalParamDefault{one face per connected component}
+    \cgalParamNEnd
+    \cgalParamNBegin{maximum_number}
+      \cgalParamDescription{cap on the number of intersection vertices; `Remeshing_error`
+                            is thrown when it would be exceeded}
+      \cgalParamDefault{50,000,000}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_point_map}\cgalParamDefault{`get(CGAL::vertex_point, tm)`}\cgalParamNEnd
+    \cgalParamNBegin{geom_traits}
+      \cgalParamDescription{a model of `RangeSpaceTraits` of dimension D}
+      \cgalParamDefault{`Range_space_traits<D>`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+\param np_out optional named parameters for `out`: `vertex_point_map`, and
+  `vertex_normal_map` (a writable map receiving unit normals interpolated from the
+  input's vertex normals).
+
+\returns what the run did, including per-stage times.
+\throws Remeshing_error on an empty mesh, a non-triangle face, a border (not
+  supported yet), a non-finite map value or cell size, a cell size so small that
+  range coordinates exceed 2^29 cells, or when the output cap would be exceeded.
+*/
+template <class TriangleMesh, class PolygonMesh,
+          class NamedParametersIn = CGAL::parameters::Default_named_parameters,
+          class NamedParametersOut = CGAL::parameters::Default_named_parameters>
+Statistics primal_remesh(const TriangleMesh& tm, PolygonMesh& out,
+                         const NamedParametersIn& np_in = CGAL::parameters::default_values(),
+                         const NamedParametersOut& np_out = CGAL::parameters::default_values())
+{
+  return internal::primal_remesh_impl(tm, out, np_in, np_out, internal::No_inspection());
+}
+
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_PRIMAL_REMESH_H
