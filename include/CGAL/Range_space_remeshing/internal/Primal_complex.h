@@ -126,7 +126,7 @@ private:
       remove_from_rotation(h1);
       remove_from_rotation(h2);
       orbit_degree_[f] = 0;
-      ++digons_;
+      digon_vertices_.push_back(h1 / 4);
     }
   }
 
@@ -208,7 +208,7 @@ private:
     halfedges_[out_2].next = ear_chord;
     halfedges_[before_a].next = rest_chord;
     face_halfedge_[f] = rest_chord;
-    ++non_simple_faces_;
+    split_vertices_.push_back(a);
     return SPLIT;
   }
 
@@ -273,6 +273,11 @@ private:
     for(std::uint32_t f = 0; f < face_halfedge_.size(); ++f)
       if(!kept_vertex_[halfedges_[face_halfedge_[f]].target])
         face_halfedge_[f] = none;
+    // report only the repairs that are in the output
+    digons_ = std::count_if(digon_vertices_.begin(), digon_vertices_.end(),
+                            [this](std::uint32_t v) { return bool(kept_vertex_[v]); });
+    non_simple_faces_ = std::count_if(split_vertices_.begin(), split_vertices_.end(),
+                                      [this](std::uint32_t v) { return bool(kept_vertex_[v]); });
   }
 
   std::uint32_t number_of_vertices_;
@@ -286,6 +291,7 @@ private:
   std::vector<bool> kept_vertex_;
   std::vector<std::uint32_t> last_visit_;
   std::vector<std::uint32_t> unsplittable_faces_;
+  std::vector<std::uint32_t> digon_vertices_, split_vertices_; // one vertex of each repair
 
   std::size_t digons_ = 0, non_simple_faces_ = 0, dropped_pieces_ = 0;
 };

@@ -1,0 +1,255 @@
+// The primal remesh on meshes generated in code: invariants, Euler characteristic,
+// degenerate positions, dimensions 3 to 12, both kernels, Polyhedron_3, errors.
+#include "test_support.h"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
+#include <CGAL/boost/graph/properties_Polyhedron_3.h>
+
+#include <limits>
+
+using namespace test;
+namespace params = CGAL::parameters;
+using RSR::parameters::range_map;
+using RSR::parameters::grid_origin;
+
+// f(p) = (x, y, z, then D-3 fixed generic linear combinations of x, y, z)
+template <int D>
+struct Lifted_map
+{
+  using key_type = Mesh::Vertex_index;
+  using value_type = std::array<double, D>;
+  using reference = value_type;
+  using category = boost::readable_property_map_tag;
+  const Mesh* mesh;
+
+  friend value_type get(const Lifted_map& map, key_type v)
+  {
+    const Point& p = map.mesh->point(v);
+    value_type x;
+    x[0] = p.x(); x[1] = p.y(); x[2] = p.z();
+    for(int q = 3; q < D; ++q)
+      x[q] = (0.31 + 0.07 * q) * p.x() - (0.23 + 0.05 * q) * p.y() + (0.17 - 0.03 * q) * p.z();
+    return x;
+  }
+};
+
+// f(p) = (x, y, z) followed by `extra` given by a function of the position
+template <int D, class Extra>
+struct Appended_map
+{
+  using key_type = Mesh::Vertex_index;
+  using value_type = std::array<double, D>;
+  using reference = value_type;
+  using category = boost::readable_property_map_tag;
+  const Mesh* mesh;
+  Extra extra;
+
+  friend value_type get(const Appended_map& map, key_type v)
+  {
+    const Point& p = map.mesh->point(v);
+    value_type x;
+    x[0] = p.x(); x[1] = p.y(); x[2] = p.z();
+    map.extra(p, x);
+    return x;
+  }
+};
+
+template <int D, class Extra>
+Appended_map<D, Extra> appended(const Mesh& m, Extra extra) { return {&m, extra}; }
+
+void test_euler_characteristic()
+{
+  struct Case { const char* name; Mesh mesh; long chi; double h; };
+  std::vector<Case> cases;
+  cases.push_back({"sphere", make_sphere(1.0, 4), 2, 0.1});
+  cases.push_back({"ellipsoid", make_ellipsoid(1.5, 1.0, 0.6, 4), 2, 0.1});
+  cases.push_back({"torus", make_torus(1.0, 0.4, 120, 60), 0, 0.1});
+  cases.push_back({"genus 2", make_genus_2(3), -2, 0.1});
+  for(Case& c : cases) {
+    CHECK_EQ(euler_characteristic(c.mesh), c.chi);
+    for(double h : {c.h, c.h / 2}) {
+      Mesh out;
+      const auto stats = remesh_and_check(c.mesh, out, params::grid_spacing(h));
+      std::cout << c.name << " h=" << h << ": " << num_vertices(out) << " vertices, "
+                << num_faces(out) << " faces, " << stats.digons << " digons" << std::endl;
+      CHECK_EQ(euler_characteristic(out), c.chi);
+      CHECK_EQ(number_of_components(out), std::size_t(1));
+      CHECK(num_vertices(out) > 100);
+    }
+  }
+}
+
+void test_lattice_cube()
+{
+  // every input vertex lies on grid planes, every edge on grid edges or planes
+  Mesh cube = make_lattice_cube(4);
+  for(double h : {1.0, 2.0, 0.5}) {
+    Mesh out;
+    remesh_and_check(cube, out, params::grid_spacing(h));
+    CHECK_EQ(euler_characteristic(out), 2L);
+    CHECK_EQ(number_of_components(out), std::size_t(1));
+  }
+  // a 4x4x4 cube at h = 1: grid edges through the surface = 96 (perturbed lattice)
+  Mesh out;
+  remesh_and_check(cube, out, params::grid_spacing(1.0));
+  CHECK_EQ(num_vertices(out), std::size_t(96));
+}
+
+void test_appended_coordinates()
+{
+  const Mesh sphere = make_sphere(1.0, 3, Point(0.013, -0.021, 0.007));
+  Mesh reference;
+  remesh_and_check(sphere, reference, params::grid_spacing(0.25));
+  const std::string expected = fingerprint(reference);
+
+  for(double constant : {2.0, 0.3, -1.0}) {
+    Mesh out;
+    auto f = appended<4>(sphere, [constant](const Point&, std::array<double, 4>& x) { x[3] = constant; });
+    remesh_and_check(sphere, out, range_map(f).grid_spacing(0.25));
+    CHECK(fingerprint(out) == expected);
+  }
+  // a constant coordinate before the others: same output too
+  {
+    Mesh out;
+    auto f = appended<4>(sphere, [](const Point& p, std::array<double, 4>& x) {
+      x = {{1.0, p.x(), p.y(), p.z()}};
+    });
+    remesh_and_check(sphere, out, range_map(f).grid_spacing(0.25));
+    CHECK(fingerprint(out) == expected);
+  }
+  // a duplicated coordinate: the surface lies in the hyperplane x_3 = x_0
+  {
+    Mesh out;
+    auto f = appended<4>(sphere, [](const Point& p, std::array<double, 4>& x) { x[3] = p.x(); });
+    remesh_and_check(sphere, out, range_map(f).grid_spacing(0.25));
+    CHECK_EQ(euler_characteristic(out), 2L);
+    CHECK(num_vertices(out) >= num_vertices(reference));
+  }
+}
+
+template <int D>
+void test_dimension(const Mesh& torus)
+{
+  Mesh out;
+  Lifted_map<D> f{&torus};
+  const auto stats = remesh_and_check(torus, out, range_map(f).grid_spacing(0.15));
+  std::cout << "D=" << D << ": " << num_vertices(out) << " vertices, " << stats.digons
+            << " digons" << std::endl;
+  CHECK_EQ(euler_characteristic(out), 0L);
+  CHECK_EQ(number_of_components(out), std::size_t(1));
+  if constexpr(D < 12)
+    test_dimension<D + 1>(torus);
+}
+
+void test_kernels_and_graphs()
+{
+  const Mesh torus = make_torus(1.0, 0.35, 80, 40);
+  Mesh epick_out, epeck_out;
+  remesh_and_check(torus, epick_out, params::grid_spacing(0.1));
+  using Epeck_traits = RSR::Range_space_traits<3, CGAL::Exact_predicates_exact_constructions_kernel>;
+  remesh_and_check(torus, epeck_out, params::grid_spacing(0.1).geom_traits(Epeck_traits()));
+  CHECK(fingerprint(epick_out) == fingerprint(epeck_out));
+
+  // a lattice-aligned input, where the perturbation decides most predicates
+  const Mesh cube = make_lattice_cube(3);
+  Mesh cube_epick, cube_epeck;
+  remesh_and_check(cube, cube_epick, params::grid_spacing(1.0));
+  remesh_and_check(cube, cube_epeck, params::grid_spacing(1.0).geom_traits(Epeck_traits()));
+  CHECK(fingerprint(cube_epick) == fingerprint(cube_epeck));
+
+  // Polyhedron_3 in and out
+  using Polyhedron = CGAL::Polyhedron_3<K>;
+  Polyhedron poly_in, poly_out;
+  CGAL::copy_face_graph(torus, poly_in);
+  const auto stats = RSR::primal_remesh(poly_in, poly_out, params::grid_spacing(0.1));
+  CHECK(CGAL::is_valid_polygon_mesh(poly_out));
+  CHECK(CGAL::is_closed(poly_out));
+  CHECK_EQ(num_vertices(poly_out), num_vertices(epick_out));
+  CHECK_EQ(num_faces(poly_out), num_faces(epick_out));
+  CHECK_EQ(stats.output_faces, num_faces(poly_out));
+}
+
+void test_determinism_and_seeding()
+{
+  const Mesh genus_2 = make_genus_2(3);
+  Mesh a, b, seeded;
+  remesh_and_check(genus_2, a, params::grid_spacing(0.13));
+  remesh_and_check(genus_2, b, params::grid_spacing(0.13));
+  CHECK(fingerprint(a) == fingerprint(b));
+  const auto stats = remesh_and_check(
+      genus_2, seeded, params::grid_spacing(0.13).seeding_method(RSR::Seeding_method::SEEDED));
+  CHECK_EQ(num_vertices(seeded), num_vertices(a));
+  CHECK_EQ(num_faces(seeded), num_faces(a));
+  CHECK_EQ(stats.seeds, std::size_t(1));
+
+  // On a finely tessellated input the seeded traversal maps a fraction of it.
+  const Mesh fine = make_sphere(1.0, 6); // 40,962 vertices
+  Mesh out;
+  const auto fine_stats = remesh_and_check(
+      fine, out, params::grid_spacing(0.25).seeding_method(RSR::Seeding_method::SEEDED));
+  std::cout << "seeded: mapped " << fine_stats.mapped_vertices << " of "
+            << num_vertices(fine) << " input vertices" << std::endl;
+  CHECK(fine_stats.mapped_vertices * 3 < num_vertices(fine));
+  CHECK_EQ(euler_characteristic(out), 2L);
+
+  // the grid origin shifts the lattice
+  Mesh shifted;
+  remesh_and_check(fine, shifted, grid_origin(std::array<double, 3>{{0.1, 0.05, 0.0}},
+                                              params::grid_spacing(0.25)));
+  CHECK_EQ(euler_characteristic(shifted), 2L);
+  CHECK(fingerprint(shifted) != fingerprint(out));
+}
+
+template <class F>
+bool throws_remeshing_error(F f)
+{
+  try {
+    f();
+  } catch(const RSR::Remeshing_error& e) {
+    std::cout << "  expected error: " << e.what() << std::endl;
+    return true;
+  }
+  return false;
+}
+
+void test_errors()
+{
+  const Mesh sphere = make_sphere(1.0, 2);
+  Mesh out;
+  CHECK(throws_remeshing_error([&] { RSR::primal_remesh(Mesh(), out); }));
+  for(double h : {0.0, -1.0, std::numeric_limits<double>::infinity(),
+                  std::numeric_limits<double>::quiet_NaN()})
+    CHECK(throws_remeshing_error([&] { RSR::primal_remesh(sphere, out, params::grid_spacing(h)); }));
+  CHECK(throws_remeshing_error([&] { RSR::primal_remesh(sphere, out, params::grid_spacing(1e-12)); }));
+  CHECK(throws_remeshing_error(
+      [&] { RSR::primal_remesh(sphere, out, params::grid_spacing(0.01).maximum_number(1000)); }));
+  auto nan_map = appended<4>(sphere, [](const Point& p, std::array<double, 4>& x) {
+    x[3] = p.x() > 0.5 ? std::numeric_limits<double>::quiet_NaN() : 0.0;
+  });
+  CHECK(throws_remeshing_error([&] { RSR::primal_remesh(sphere, out, range_map(nan_map)); }));
+  Mesh open = sphere;
+  CGAL::Euler::remove_face(halfedge(*faces(open).begin(), open), open);
+  CHECK(throws_remeshing_error([&] { RSR::primal_remesh(open, out, params::grid_spacing(0.1)); }));
+  CHECK(throws_remeshing_error([&] {
+    RSR::primal_remesh(open, out, params::grid_spacing(0.1).seeding_method(RSR::Seeding_method::SEEDED));
+  }));
+  Mesh quads;
+  CGAL::make_hexahedron(Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0),
+                        Point(0, 1, 1), Point(0, 0, 1), Point(1, 0, 1), Point(1, 1, 1), quads);
+  CHECK(throws_remeshing_error([&] { RSR::primal_remesh(quads, out, params::grid_spacing(0.3)); }));
+}
+
+int main()
+{
+  test_euler_characteristic();
+  test_lattice_cube();
+  test_appended_coordinates();
+  test_dimension<3>(make_torus(1.0, 0.4, 90, 45));
+  test_kernels_and_graphs();
+  test_determinism_and_seeding();
+  test_errors();
+  return report("test_primal_remesh");
+}
