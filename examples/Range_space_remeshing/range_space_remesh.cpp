@@ -1,0 +1,369 @@
+// range_space_remesh: command-line front end of the Range_space_remeshing package.
+//
+//   range_space_remesh [options] INPUT OUTPUT
+//
+// Reads a mesh (OFF, OBJ, PLY, STL), remeshes it by intersecting its image under
+// the range map with a uniform grid, and writes the result (same formats).
+// Exit status: 0 on success, 2 on bad arguments or unusable input (one line on
+// stderr). The output file is written atomically: it never exists half-written,
+// and is not created on failure.
+
+#include <CGAL/Range_space_remeshing/primal_remesh.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/assertions_behaviour.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/IO/polygon_soup_io.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <unistd.h>
+
+namespace {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+namespace RSR = CGAL::Range_space_remeshing;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+const char* usage =
+    "usage: range_space_remesh [options] INPUT OUTPUT\n"
+    "\n"
+    "Remeshes the closed triangle mesh INPUT by intersecting its image under a map f\n"
+    "with a uniform grid of cell size H in the range space, and writes OUTPUT.\n"
+    "Formats (by extension): .off .obj .ply .stl. Polygonal input is triangulated.\n"
+    "\n"
+    "options:\n"
+    "  --map NAME            the map f: identity (the default): the position, D = 3\n"
+    "  --cell-size H         cell size as a fraction of the input's bounding-box\n"
+    "                        diagonal (default 0.01)\n"
+    "  --absolute            H is in the map's own units, with the grid origin at 0\n"
+    "  --target-vertices N   choose H so that the output has N vertices (within 10%)\n"
+    "  --output primal       the primal remesh: faces are the pieces of the surface\n"
+    "                        in each grid cell, vertices have valence 4 (the default)\n"
+    "  --seeded              seeded traversal from one face per component: maps only\n"
+    "                        the triangles the arcs cross (sublinear), may miss pieces\n"
+    "  --stats               print one JSON object with counts and times on stdout\n"
+    "  --help                print this help and exit\n"
+    "\n"
+    "exit status: 0 on success, 2 on bad arguments or unusable input.\n";
+
+struct Failure
+{
+  std::string message;
+};
+
+[[noreturn]] void fail(const std::string& message) { throw Failure{message}; }
+
+/// CGAL's readers and writers explain failures on std::cerr; the program reports
+/// them in its own single line instead, so silence std::cerr while they run.
+class Silenced_cerr
+{
+public:
+  Silenced_cerr() : saved_(std::cerr.rdbuf(nullptr)) {}
+  ~Silenced_cerr() { std::cerr.rdbuf(saved_); }
+
+private:
+  std::streambuf* saved_;
+};
+
+/// Splits every face that is not a triangle into a fan: always possible, whatever
+/// the geometry (used where the constrained triangulation gives up).
+void fan_triangulate(Mesh& mesh)
+{
+  std::vector<Mesh::Face_index> polygons;
+  for(auto f : faces(mesh))
+    if(degree(f, mesh) > 3)
+      polygons.push_back(f);
+  for(auto f : polygons) {
+    auto h = halfedge(f, mesh);
+    while(degree(face(h, mesh), mesh) > 3)
+      h = prev(CGAL::Euler::split_face(h, next(next(h, mesh), mesh), mesh), mesh);
+  }
+}
+
+struct Options
+{
+  std::string input, output, map = "identity", output_kind = "primal";
+  double cell_size = 0.01;
+  bool absolute = false, seeded = false, stats = false;
+  long target_vertices = 0;
+};
+
+double parse_number(const std::string& option, const char* text)
+{
+  char* end = nullptr;
+  const double value = std::strtod(text, &end);
+  if(end == text || *end != '\0' || !std::isfinite(value))
+    fail(option + " expects a finite number, got '" + text + "'");
+  return value;
+}
+
+Options parse_arguments(int argc, char** argv)
+{
+  Options options;
+  std::vector<std::string> positional;
+  for(int a = 1; a < argc; ++a) {
+    const std::string arg = argv[a];
+    auto value = [&]() -> const char* {
+      if(a + 1 >= argc)
+        fail(arg + " expects a value");
+      return argv[++a];
+    };
+    if(arg == "--help" || arg == "-h") {
+      std::cout << usage;
+      std::exit(EXIT_SUCCESS);
+    } else if(arg == "--map") {
+      options.map = value();
+      if(options.map != "identity")
+        fail("unknown map '" + options.map + "' (available: identity)");
+    } else if(arg == "--cell-size") {
+      options.cell_size = parse_number(arg, value());
+      if(!(options.cell_size > 0))
+        fail("--cell-size must be positive");
+    } else if(arg == "--absolute") {
+      options.absolute = true;
+    } else if(arg == "--target-vertices") {
+      const double n = parse_number(arg, value());
+      if(!(n >= 4) || n != std::floor(n) || n > 1e9)
+        fail("--target-vertices expects an integer between 4 and 10^9");
+      options.target_vertices = long(n);
+    } else if(arg == "--output") {
+      options.output_kind = value();
+      if(options.output_kind != "primal")
+        fail("unknown output '" + options.output_kind + "' (available: primal)");
+    } else if(arg == "--seeded") {
+      options.seeded = true;
+    } else if(arg == "--stats") {
+      options.stats = true;
+    } else if(!arg.empty() && arg[0] == '-' && arg != "-") {
+      fail("unknown option '" + arg + "' (see --help)");
+    } else {
+      positional.push_back(arg);
+    }
+  }
+  if(positional.size() != 2)
+    fail("expected INPUT and OUTPUT (see --help)");
+  options.input = positional[0];
+  options.output = positional[1];
+  return options;
+}
+
+std::string extension_of(const std::string& path)
+{
+  const auto dot = path.find_last_of('.');
+  const auto slash = path.find_last_of('/');
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return "";
+  std::string ext = path.substr(dot + 1);
+  for(char& c : ext)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+bool is_supported_format(const std::string& path)
+{
+  const std::string ext = extension_of(path);
+  return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl";
+}
+
+/// Reads INPUT as a polygon soup and checks it is a usable closed 2-manifold.
+Mesh read_input(const std::string& path, bool& triangulated)
+{
+  if(!is_supported_format(path))
+    fail("cannot read '" + path + "': unsupported format (use .off .obj .ply .stl)");
+  std::vector<K::Point_3> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  bool ok = false;
+  try {
+    Silenced_cerr silence;
+    ok = CGAL::IO::read_polygon_soup(path, points, polygons);
+  } catch(const std::exception&) {
+    ok = false;
+  }
+  if(!ok)
+    fail("cannot read '" + path + "': missing, unreadable or not a valid mesh file");
+  if(polygons.empty())
+    fail("'" + path + "' contains no face");
+  for(const auto& p : points)
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      fail("'" + path + "' has a NaN or infinite vertex coordinate");
+  for(const auto& polygon : polygons) {
+    if(polygon.size() < 3)
+      fail("'" + path + "' has a face with fewer than 3 vertices");
+    for(std::size_t v : polygon)
+      if(v >= points.size())
+        fail("'" + path + "' has a face referring to a missing vertex");
+  }
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    fail("'" + path + "' is not a 2-manifold oriented mesh (non-manifold edge or vertex, or "
+         "inconsistent orientation)");
+  Mesh mesh;
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  triangulated = !CGAL::is_triangle_mesh(mesh);
+  if(triangulated) {
+    bool all_triangulated = false;
+    try {
+      all_triangulated = PMP::triangulate_faces(mesh);
+    } catch(const std::exception&) {
+      all_triangulated = false;
+    }
+    if(!all_triangulated)
+      fan_triangulate(mesh);
+  }
+  if(!CGAL::is_closed(mesh))
+    fail("'" + path + "' has a border: surfaces with boundary are not supported yet");
+  return mesh;
+}
+
+/// Writes the mesh next to `path` under a temporary name, then renames it, so that
+/// `path` is never seen half-written.
+void write_atomically(const Mesh& mesh, const std::string& path)
+{
+  if(!is_supported_format(path))
+    fail("cannot write '" + path + "': unsupported format (use .off .obj .ply .stl)");
+  const auto slash = path.find_last_of('/');
+  const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
+  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
+  const std::string temporary =
+      dir + "." + name + ".tmp" + std::to_string(::getpid()) + "." + extension_of(path);
+  bool ok = false;
+  try {
+    Silenced_cerr silence;
+    ok = CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
+  } catch(const std::exception&) {
+    ok = false;
+  }
+  if(!ok || std::rename(temporary.c_str(), path.c_str()) != 0) {
+    std::remove(temporary.c_str());
+    fail("cannot write '" + path + "'");
+  }
+}
+
+std::size_t components(const Mesh& mesh)
+{
+  std::vector<std::size_t> ids(num_faces(mesh));
+  return PMP::connected_components(
+      mesh, CGAL::make_property_map(ids));
+}
+
+RSR::Statistics remesh(const Mesh& input, double h, bool seeded, Mesh& output)
+{
+  output.clear();
+  const auto seeding = seeded ? RSR::Seeding_method::SEEDED : RSR::Seeding_method::COMPLETE_SCAN;
+  return RSR::primal_remesh(input, output,
+                            CGAL::parameters::grid_spacing(h).seeding_method(seeding));
+}
+
+/// Chooses the cell size so that the output has about `target` vertices: the count
+/// goes roughly as 1/h^2, refined by a few secant steps in log-log scale.
+double cell_size_for_target(const Mesh& input, double start, const Options& options, Mesh& output,
+                            RSR::Statistics& stats)
+{
+  double h = start;
+  double previous_h = 0, previous_log_n = 0;
+  const double log_target = std::log(double(options.target_vertices));
+  for(int iteration = 0; iteration < 12; ++iteration) {
+    stats = remesh(input, h, options.seeded, output);
+    const double n = double(std::max<std::size_t>(stats.output_vertices, 1));
+    if(std::abs(n - options.target_vertices) <= 0.1 * options.target_vertices)
+      return h;
+    double slope = -2; // d log n / d log h
+    if(previous_h > 0) {
+      const double s = (std::log(n) - previous_log_n) / (std::log(h) - std::log(previous_h));
+      if(std::isfinite(s) && s < -0.5 && s > -4)
+        slope = s;
+    }
+    previous_h = h;
+    previous_log_n = std::log(n);
+    h = std::exp(std::log(h) + (log_target - std::log(n)) / slope);
+  }
+  fail("could not reach " + std::to_string(options.target_vertices) +
+       " output vertices within 10% (last try: " + std::to_string(stats.output_vertices) + ")");
+}
+
+void print_stats(const Options& options, const Mesh& input, const Mesh& output,
+                 const RSR::Statistics& s, double h, bool triangulated)
+{
+  std::ostringstream json;
+  json.precision(6);
+  json << "{\"input\": \"" << options.input << "\", \"output\": \"" << options.output << "\""
+       << ", \"map\": \"" << options.map << "\", \"D\": 3"
+       << ", \"cell_size\": " << h << ", \"seeding\": \"" << (options.seeded ? "seeded" : "complete")
+       << "\", \"output_kind\": \"" << options.output_kind << "\""
+       << ", \"triangulated\": " << (triangulated ? "true" : "false")
+       << ", \"input_vertices\": " << num_vertices(input) << ", \"input_faces\": " << num_faces(input)
+       << ", \"input_components\": " << components(input)
+       << ", \"output_vertices\": " << num_vertices(output)
+       << ", \"output_edges\": " << num_edges(output) << ", \"output_faces\": " << num_faces(output)
+       << ", \"output_components\": " << components(output)
+       << ", \"mapped_vertices\": " << s.mapped_vertices << ", \"visited_faces\": " << s.visited_faces
+       << ", \"intersection_vertices\": " << s.intersection_vertices
+       << ", \"digons\": " << s.digons << ", \"non_simple_faces\": " << s.non_simple_faces
+       << ", \"dropped_pieces\": " << s.dropped_pieces
+       << ", \"time_ms\": {\"seeding\": " << s.time_seeding_ms << ", \"tracing\": " << s.time_tracing_ms
+       << ", \"faces\": " << s.time_faces_ms << ", \"output\": " << s.time_output_ms
+       << ", \"total\": " << s.time_total_ms << "}}";
+  std::cout << json.str() << std::endl;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  // CGAL warnings (e.g. a polygon the constrained triangulation cannot handle) are
+  // dealt with by the program; keep stderr to the one-line error contract.
+  CGAL::set_warning_handler([](const char*, const char*, const char*, int, const char*) {});
+  try {
+    const Options options = parse_arguments(argc, argv);
+    bool triangulated = false;
+    const Mesh input = read_input(options.input, triangulated);
+    if(!is_supported_format(options.output))
+      fail("cannot write '" + options.output + "': unsupported format (use .off .obj .ply .stl)");
+
+    double h = options.cell_size;
+    if(!options.absolute) {
+      const CGAL::Bbox_3 box = PMP::bbox(input);
+      const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
+                                        CGAL::square(box.ymax() - box.ymin()) +
+                                        CGAL::square(box.zmax() - box.zmin()));
+      if(!(diagonal > 0))
+        fail("the input's bounding box is a single point");
+      h *= diagonal;
+    }
+    Mesh output;
+    RSR::Statistics stats;
+    if(options.target_vertices > 0)
+      h = cell_size_for_target(input, h, options, output, stats);
+    else
+      stats = remesh(input, h, options.seeded, output);
+    if(num_faces(output) == 0)
+      fail("the remesh is empty: the cell size is larger than the input");
+    write_atomically(output, options.output);
+    if(options.stats)
+      print_stats(options, input, output, stats, h, triangulated);
+    return EXIT_SUCCESS;
+  } catch(const Failure& f) {
+    std::cerr << "range_space_remesh: " << f.message << std::endl;
+  } catch(const RSR::Remeshing_error& e) {
+    std::cerr << "range_space_remesh: " << e.what() << std::endl;
+  } catch(const std::bad_alloc&) {
+    std::cerr << "range_space_remesh: out of memory" << std::endl;
+  } catch(const std::exception& e) {
+    std::cerr << "range_space_remesh: " << e.what() << std::endl;
+  }
+  return 2;
+}

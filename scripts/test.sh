@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Builds the package's tests, examples and command-line program (Release with
+# assertions on) into build/ and runs the ctest suite.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bash scripts/install_dependencies.sh
+export CCACHE_DIR="${CCACHE_DIR:-$HOME/.cache/ccache}"
+# Release optimisation, but without -DNDEBUG: CGAL assertions stay on in tests.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2" \
+      -DBUILD_TESTING=ON -DRANGE_SPACE_REMESHING_BUILD_EXAMPLES=ON
+cmake --build build -j "$(nproc)"
+ctest --test-dir build --output-on-failure -j 2
