@@ -26,6 +26,7 @@
 #include <cmath>
 #include <cstdint>
 #include <deque>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -35,6 +36,7 @@ namespace Range_space_remeshing {
 namespace internal {
 
 constexpr std::uint32_t no_link = std::uint32_t(-1);
+constexpr double infinity = std::numeric_limits<double>::infinity();
 
 // Lattice levels are kept in 32-bit integers; range coordinates beyond this bound
 // mean an absurd cell size and are rejected before they could overflow.
@@ -54,6 +56,13 @@ struct Intersection_vertex
   std::int32_t m() const { return cell[j]; }
 };
 
+/// std::ceil for |x| < 2^31, without a library call.
+inline std::int32_t ceil_to_int(double x)
+{
+  const std::int32_t i = std::int32_t(x);
+  return i + (double(i) < x);
+}
+
 template <class TriangleMesh, class RangeMap, class FaceIndexMap, class VertexIndexMap,
           class Traits>
 class Grid_tracer
@@ -67,6 +76,7 @@ public:
   static constexpr int D = Traits::dimension;
   using Point_d = typename Traits::Point_d;
   using Vertex = Intersection_vertex<D>;
+  using Levels = std::array<std::int32_t, D>;
 
   Grid_tracer(const TriangleMesh& tm, RangeMap range_map, FaceIndexMap face_index,
               VertexIndexMap vertex_index, const Point_d& origin, double cell_size,
@@ -74,7 +84,8 @@ public:
     : tm_(tm), range_map_(range_map), face_index_(face_index), vertex_index_(vertex_index),
       origin_(origin), cell_size_(cell_size), maximum_vertices_(maximum_vertices),
       predicates_(traits), mapped_(num_vertices(tm), 0),
-      u_(new Point_d[num_vertices(tm)]), face_visited_(num_faces(tm), 0),
+      u_(new Point_d[num_vertices(tm)]), ceilings_(new Levels[num_vertices(tm)]),
+      face_visited_(num_faces(tm), 0),
       face_of_id_(num_faces(tm))
   {}
 
@@ -94,11 +105,9 @@ public:
     int crossed_axes[D];
     int number_of_crossed_axes = 0;
     for(int q = 0; q < D; ++q) {
-      const double lo = (std::min)({(*t.p[0])[q], (*t.p[1])[q], (*t.p[2])[q]});
-      const double hi = (std::max)({(*t.p[0])[q], (*t.p[1])[q], (*t.p[2])[q]});
       // level k + eps lies strictly between lo and hi iff ceil(lo) <= k <= ceil(hi) - 1
-      first[q] = std::int32_t(std::ceil(lo));
-      last[q] = std::int32_t(std::ceil(hi)) - 1;
+      first[q] = (std::min)({(*t.c[0])[q], (*t.c[1])[q], (*t.c[2])[q]});
+      last[q] = (std::max)({(*t.c[0])[q], (*t.c[1])[q], (*t.c[2])[q]}) - 1;
       if(first[q] <= last[q])
         crossed_axes[number_of_crossed_axes++] = q;
     }
@@ -172,7 +181,8 @@ private:
     face_descriptor f;
     std::uint32_t face_id;
     std::array<halfedge_descriptor, 3> h; // h[e] goes from vertex e to vertex e+1
-    std::array<const Point_d*, 3> p;
+    std::array<const Point_d*, 3> p;      // range coordinates of the corners
+    std::array<const Levels*, 3> c;       // their ceilings
   };
 
   struct Wall
@@ -183,12 +193,13 @@ private:
   };
 
   // -------------------------------------------------------------- the lazy map
-  const Point_d& u(vertex_descriptor v)
+  std::size_t u(vertex_descriptor v)
   {
     const std::size_t id = get(vertex_index_, v);
     if(!mapped_[id]) {
       const Point_d f = get(range_map_, v);
       Point_d& x = u_[id];
+      Levels& c = ceilings_[id];
       for(int q = 0; q < D; ++q) {
         if(!std::isfinite(f[q]))
           throw Remeshing_error("the range map gives a NaN or infinite value at input vertex " +
@@ -197,11 +208,12 @@ private:
         if(!(std::abs(x[q]) < maximum_lattice_coordinate))
           throw Remeshing_error("the cell size is too small for the range of the map: "
                                 "more than 2^29 cells along one axis");
+        c[q] = ceil_to_int(x[q]);
       }
       mapped_[id] = 1;
       ++number_of_mapped_;
     }
-    return u_[id];
+    return id;
   }
 
   Triangle load(face_descriptor f)
@@ -215,9 +227,11 @@ private:
     if(next(t.h[2], tm_) != t.h[0])
       throw Remeshing_error("the input has a face that is not a triangle (face " +
                             std::to_string(t.face_id) + ")");
-    t.p[0] = &u(source(t.h[0], tm_));
-    t.p[1] = &u(source(t.h[1], tm_));
-    t.p[2] = &u(source(t.h[2], tm_));
+    for(int e = 0; e < 3; ++e) {
+      const std::size_t id = u(source(t.h[e], tm_));
+      t.p[e] = &u_[id];
+      t.c[e] = &ceilings_[id];
+    }
     if(!face_visited_[t.face_id]) {
       face_visited_[t.face_id] = 1;
       ++number_of_visited_faces_;
@@ -332,20 +346,20 @@ private:
       const Point_d& a = *t.p[e];
       const Point_d& b = *t.p[(e + 1) % 3];
 
+      const double t_exit = Predicates::crossing_parameter(a, b, P, double(level));
       Wall first;
       for(int l = 0; l < D; ++l) {
         if(l == P)
           continue;
-        Wall crossed;
-        const bool behind_is_lo = (dir > 0);
-        const bool skip_lo = (step == 0 && l == T && behind_is_lo);
-        const bool skip_hi = (step == 0 && l == T && !behind_is_lo);
-        if(!skip_lo && predicates_.crossing_side(a, b, P, level, l, lo[l]) < 0)
-          crossed = Wall{l, lo[l], -1};
-        else if(!skip_hi && predicates_.crossing_side(a, b, P, level, l, hi[l]) > 0)
-          crossed = Wall{l, hi[l], +1};
-        else
+        // In the first triangle the arc cannot cross back the wall it starts on.
+        const bool skip_lo = (step == 0 && l == T && dir > 0);
+        const bool skip_hi = (step == 0 && l == T && dir < 0);
+        const int where = predicates_.crossing_slab_side(
+            a, b, P, level, t_exit, l, skip_lo ? -infinity : double(lo[l]),
+            skip_hi ? infinity : double(hi[l]));
+        if(where == 0)
           continue;
+        const Wall crossed = where < 0 ? Wall{l, lo[l], -1} : Wall{l, hi[l], +1};
         if(first.axis < 0 ||
            predicates_.is_met_first(*t.p[0], *t.p[1], *t.p[2], P, level, crossed.axis,
                                     crossed.level, first.axis, first.level, first.up))
@@ -367,9 +381,9 @@ private:
   /// The ccw edge of `t` through which an arc in x_P = level leaves, given sigma.
   int exit_edge(const Triangle& t, int P, std::int32_t level, int sigma) const
   {
-    int side[3];
+    int side[3]; // u_P > level iff ceil(u_P) > level: ties count as below
     for(int e = 0; e < 3; ++e)
-      side[e] = Predicates::side((*t.p[e])[P], double(level));
+      side[e] = (*t.c[e])[P] > level ? 1 : -1;
     for(int e = 0; e < 3; ++e)
       if(side[e] == -sigma && side[(e + 1) % 3] == sigma)
         return e;
@@ -437,7 +451,7 @@ public:
   }
 
   /// The lattice coordinates of a mapped input vertex (for checks).
-  const Point_d& range_coordinates(vertex_descriptor v) { return u(v); }
+  const Point_d& range_coordinates(vertex_descriptor v) { return u_[u(v)]; }
 
 private:
   using Predicates = Perturbed_predicates<Traits>;
@@ -453,6 +467,7 @@ private:
 
   std::vector<std::uint8_t> mapped_;
   std::unique_ptr<Point_d[]> u_; // left uninitialised: filled on first use only
+  std::unique_ptr<Levels[]> ceilings_; // ceil of u, the first level above each coordinate
   std::size_t number_of_mapped_ = 0;
   std::vector<std::uint8_t> face_visited_;
   std::size_t number_of_visited_faces_ = 0;

@@ -20,6 +20,8 @@
 #include <CGAL/enum.h>
 
 #include <array>
+#include <cmath>
+#include <limits>
 
 namespace CGAL {
 namespace Range_space_remeshing {
@@ -114,6 +116,37 @@ public:
     return -perturbed_orientation_2(a, b, P, l, level, c) * side_b;
   }
 
+  /// Parameter of the point where edge ab crosses the plane x_P = level, as a
+  /// double estimate for `crossing_slab_side()`.
+  static double crossing_parameter(const Point_d& a, const Point_d& b, int P, double level)
+  {
+    return (level - a[P]) / (b[P] - a[P]);
+  }
+
+  /// Where edge ab crosses the plane x_P = level, relative to the slab
+  /// lo <= x_l <= hi of two walls: -1 below lo, +1 above hi, 0 between. The double
+  /// estimate from `t = crossing_parameter()` decides when it is far from both walls,
+  /// the exact predicate otherwise. lo = -infinity or hi = +infinity ignores a wall.
+  int crossing_slab_side(const Point_d& a, const Point_d& b, int P, double level, double t,
+                         int l, double lo, double hi) const
+  {
+    // t has a relative error below 3u (u = 2^-53), so |error of p| <= 16 u (|a_l| + |b_l|);
+    // the margin is 300 times that.
+    const double p = a[l] + t * (b[l] - a[l]);
+    if(!(p == p))
+      return exact_slab_side(a, b, P, level, l, lo, hi);
+    const double margin = 1e-12 * (std::abs(a[l]) + std::abs(b[l]) + 1.);
+    if(p - lo < -margin)
+      return -1;
+    if(p - lo <= margin && crossing_side(a, b, P, level, l, lo) < 0)
+      return -1;
+    if(p - hi > margin)
+      return 1;
+    if(p - hi >= -margin && crossing_side(a, b, P, level, l, hi) > 0)
+      return 1;
+    return 0;
+  }
+
   /// Sign of x_q - n at the point of triangle abc on the grid edge {x_i = k, x_j = m},
   /// `o` being the triangle's orientation projected on (i, j).
   int vertex_coordinate_side(const Point_d& a, const Point_d& b, const Point_d& c,
@@ -137,6 +170,16 @@ public:
   }
 
 private:
+  int exact_slab_side(const Point_d& a, const Point_d& b, int P, double level, int l,
+                      double lo, double hi) const
+  {
+    if(lo > -std::numeric_limits<double>::infinity() && crossing_side(a, b, P, level, l, lo) < 0)
+      return -1;
+    if(hi < std::numeric_limits<double>::infinity() && crossing_side(a, b, P, level, l, hi) > 0)
+      return 1;
+    return 0;
+  }
+
   typename Traits::Orientation_2 orient2_;
   typename Traits::Orientation_3 orient3_;
 };
