@@ -135,13 +135,6 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
       throw Remeshing_error("the grid origin must be finite");
   if(num_faces(tm) == 0)
     throw Remeshing_error("the input mesh has no face");
-  if(seeding == Seeding_method::COMPLETE_SCAN) {
-    if(!CGAL::is_triangle_mesh(tm))
-      throw Remeshing_error("the input mesh has faces that are not triangles");
-    if(!CGAL::is_closed(tm))
-      throw Remeshing_error("the input has a border: surfaces with boundary are not "
-                            "supported yet");
-  }
 
   auto face_index = CGAL::get_initialized_face_index_map(tm, np_in);
   auto vertex_index = CGAL::get_initialized_vertex_index_map(tm, np_in);
@@ -156,7 +149,10 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
   const bool seeded = (seeding == Seeding_method::SEEDED);
   if(!seeded) {
     for(auto f : faces(tm))
-      tracer.scan_face(f);
+      tracer.scan_face(f); // also checks that every face is a triangle
+    if(tracer.has_seen_border())
+      throw Remeshing_error("the input has a border: surfaces with boundary are not "
+                            "supported yet");
     stats.seeds = tracer.vertices().size();
   } else {
     auto seed_range = choose_parameter(get_parameter(np_in, internal_np::seed_faces),

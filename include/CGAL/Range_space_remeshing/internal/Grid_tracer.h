@@ -84,9 +84,10 @@ public:
     : tm_(tm), range_map_(range_map), face_index_(face_index), vertex_index_(vertex_index),
       origin_(origin), cell_size_(cell_size), maximum_vertices_(maximum_vertices),
       predicates_(traits), mapped_(num_vertices(tm), 0),
-      u_(new Point_d[num_vertices(tm)]), ceilings_(new Levels[num_vertices(tm)]),
-      face_visited_(num_faces(tm), 0),
-      face_of_id_(num_faces(tm))
+      mapped_vertices_(new Mapped_vertex[num_vertices(tm)]),
+      vertex_of_id_(num_vertices(tm)), records_(new Face_record[num_faces(tm)]),
+      recorded_(num_faces(tm), 0), face_of_id_(num_faces(tm)),
+      table_(num_faces(tm) / 8) // typical outputs have a few times fewer vertices than faces
   {}
 
   // ---------------------------------------------------------------- results
@@ -94,13 +95,17 @@ public:
   face_descriptor face_of(const Vertex& v) const { return face_of_id_[v.face_id]; }
   std::size_t number_of_mapped_vertices() const { return number_of_mapped_; }
   std::size_t number_of_visited_faces() const { return number_of_visited_faces_; }
+  /// whether an input border was met (every face is recorded in a complete scan)
+  bool has_seen_border() const { return seen_border_; }
   std::size_t number_of_tracing_steps() const { return tracing_steps_; }
 
   // ---------------------------------------------------------------- seeding
   /// Finds every intersection vertex of the triangle `f` and queues it.
   void scan_face(face_descriptor f)
   {
-    const Triangle t = load(f);
+    const std::uint32_t face_id = std::uint32_t(get(face_index_, f));
+    face_of_id_[face_id] = f;
+    const Triangle t = load(face_id);
     std::array<std::int32_t, D> first, last; // lattice levels strictly crossed, per axis
     int crossed_axes[D];
     int number_of_crossed_axes = 0;
@@ -119,7 +124,7 @@ public:
             const int o = predicates_.grid_edge_orientation(*t.p[0], *t.p[1], *t.p[2], i, j,
                                                             double(k), double(m));
             if(o != 0)
-              find_or_create(t.f, t.face_id, i, j, k, m, o, /*queue*/ true);
+              find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
           }
       }
   }
@@ -128,34 +133,29 @@ public:
   /// holding an intersection vertex is found. Returns false if there is none.
   bool seed_from(face_descriptor seed)
   {
-    std::deque<face_descriptor> faces_to_scan;
-    std::vector<face_descriptor> marked;
-    auto mark = [&](face_descriptor f) {
-      std::uint8_t& flag = seed_marks_[get(face_index_, f)];
-      if(flag) return false;
-      flag = 1;
-      marked.push_back(f);
-      return true;
-    };
     if(seed_marks_.empty())
       seed_marks_.assign(num_faces(tm_), 0);
-    mark(seed);
-    faces_to_scan.push_back(seed);
+    const std::uint32_t seed_id = std::uint32_t(get(face_index_, seed));
+    face_of_id_[seed_id] = seed;
+    std::deque<std::uint32_t> faces_to_scan(1, seed_id);
+    std::vector<std::uint32_t> marked(1, seed_id);
+    seed_marks_[seed_id] = 1;
     bool found = false;
     while(!faces_to_scan.empty() && !found) {
-      const face_descriptor f = faces_to_scan.front();
+      const std::uint32_t f = faces_to_scan.front();
       faces_to_scan.pop_front();
       const std::size_t before = queue_.size();
-      scan_face(f);
+      scan_face(face_of_id_[f]);
       found = queue_.size() > before;
-      for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, tm_), tm_)) {
-        const halfedge_descriptor o = opposite(h, tm_);
-        if(!is_border(o, tm_) && mark(face(o, tm_)))
-          faces_to_scan.push_back(face(o, tm_));
-      }
+      for(std::uint32_t n : records_[f].neighbour)
+        if(n != border && !seed_marks_[n]) {
+          seed_marks_[n] = 1;
+          marked.push_back(n);
+          faces_to_scan.push_back(n);
+        }
     }
-    for(face_descriptor f : marked)
-      seed_marks_[get(face_index_, f)] = 0;
+    for(std::uint32_t f : marked)
+      seed_marks_[f] = 0;
     return found;
   }
 
@@ -176,13 +176,22 @@ public:
   }
 
 private:
+  static constexpr std::uint32_t border = std::uint32_t(-1);
+
+  // The part of the input the tracer reads, copied once per visited face into a
+  // compact array: arcs cross each triangle several times, and chasing the
+  // FaceGraph's halfedges each time is what costs (cache misses), not the predicates.
+  struct Face_record
+  {
+    std::array<std::uint32_t, 3> vertex;    // counter-clockwise, vertex 0 = source(halfedge(f))
+    std::array<std::uint32_t, 3> neighbour; // face across edge vertex e -> vertex e+1, or border
+  };
+
   struct Triangle
   {
-    face_descriptor f;
     std::uint32_t face_id;
-    std::array<halfedge_descriptor, 3> h; // h[e] goes from vertex e to vertex e+1
-    std::array<const Point_d*, 3> p;      // range coordinates of the corners
-    std::array<const Levels*, 3> c;       // their ceilings
+    std::array<const Point_d*, 3> p; // range coordinates of the corners
+    std::array<const Levels*, 3> c;  // their ceilings
   };
 
   struct Wall
@@ -193,13 +202,12 @@ private:
   };
 
   // -------------------------------------------------------------- the lazy map
-  std::size_t u(vertex_descriptor v)
+  std::size_t u(std::uint32_t id)
   {
-    const std::size_t id = get(vertex_index_, v);
     if(!mapped_[id]) {
-      const Point_d f = get(range_map_, v);
-      Point_d& x = u_[id];
-      Levels& c = ceilings_[id];
+      const Point_d f = get(range_map_, vertex_of_id_[id]);
+      Point_d& x = mapped_vertices_[id].u;
+      Levels& c = mapped_vertices_[id].ceiling;
       for(int q = 0; q < D; ++q) {
         if(!std::isfinite(f[q]))
           throw Remeshing_error("the range map gives a NaN or infinite value at input vertex " +
@@ -216,31 +224,51 @@ private:
     return id;
   }
 
-  Triangle load(face_descriptor f)
+  const Face_record& record(std::uint32_t face_id)
   {
-    Triangle t;
-    t.f = f;
-    t.face_id = std::uint32_t(get(face_index_, f));
-    t.h[0] = halfedge(f, tm_);
-    t.h[1] = next(t.h[0], tm_);
-    t.h[2] = next(t.h[1], tm_);
-    if(next(t.h[2], tm_) != t.h[0])
+    Face_record& r = records_[face_id];
+    if(recorded_[face_id])
+      return r;
+    const face_descriptor f = face_of_id_[face_id];
+    const halfedge_descriptor h0 = halfedge(f, tm_);
+    const std::array<halfedge_descriptor, 3> h = {{h0, next(h0, tm_), next(next(h0, tm_), tm_)}};
+    if(next(h[2], tm_) != h0)
       throw Remeshing_error("the input has a face that is not a triangle (face " +
-                            std::to_string(t.face_id) + ")");
+                            std::to_string(face_id) + ")");
     for(int e = 0; e < 3; ++e) {
-      const std::size_t id = u(source(t.h[e], tm_));
-      t.p[e] = &u_[id];
-      t.c[e] = &ceilings_[id];
+      const vertex_descriptor v = source(h[e], tm_);
+      r.vertex[e] = std::uint32_t(get(vertex_index_, v));
+      vertex_of_id_[r.vertex[e]] = v;
+      const halfedge_descriptor o = opposite(h[e], tm_);
+      if(is_border(o, tm_)) {
+        r.neighbour[e] = border;
+        seen_border_ = true;
+      } else {
+        const face_descriptor n = face(o, tm_);
+        r.neighbour[e] = std::uint32_t(get(face_index_, n));
+        face_of_id_[r.neighbour[e]] = n;
+      }
     }
-    if(!face_visited_[t.face_id]) {
-      face_visited_[t.face_id] = 1;
-      ++number_of_visited_faces_;
+    recorded_[face_id] = 1;
+    ++number_of_visited_faces_;
+    return r;
+  }
+
+  Triangle load(std::uint32_t face_id)
+  {
+    const Face_record& r = record(face_id);
+    Triangle t;
+    t.face_id = face_id;
+    for(int e = 0; e < 3; ++e) {
+      const std::size_t id = u(r.vertex[e]);
+      t.p[e] = &mapped_vertices_[id].u;
+      t.c[e] = &mapped_vertices_[id].ceiling;
     }
     return t;
   }
 
   // -------------------------------------------------------------- vertices
-  std::uint32_t find_or_create(face_descriptor f, std::uint32_t face_id, int i, int j,
+  std::uint32_t find_or_create(std::uint32_t face_id, int i, int j,
                                std::int32_t k, std::int32_t m, int o, bool queue)
   {
     const Vertex_key key{face_id, i, j, k, m};
@@ -262,7 +290,6 @@ private:
     v.cell[i] = k;
     v.cell[j] = m;
     vertices_.push_back(v);
-    face_of_id_[face_id] = f;
     if(queue)
       queue_.push_back(id);
     return id;
@@ -275,7 +302,7 @@ private:
   void compute_cell(std::uint32_t id)
   {
     Vertex& v = vertices_[id];
-    const Triangle t = load(face_of_id_[v.face_id]);
+    const Triangle t = load(v.face_id);
     const Point_d &a = *t.p[0], &b = *t.p[1], &c = *t.p[2];
     // barycentric estimate, only to guess the level; the exact test decides
     const std::array<double, 3> w = barycentric(t, v.i, v.j, v.k(), v.m());
@@ -335,7 +362,7 @@ private:
       hi[T] = v.cell[T];
     }
 
-    face_descriptor f = face_of_id_[v.face_id];
+    std::uint32_t f = v.face_id;
     const std::size_t maximum_steps = num_faces(tm_) + 1;
     for(std::size_t step = 0;; ++step) {
       if(step > maximum_steps)
@@ -370,11 +397,10 @@ private:
         finish_arc(t, P, level, first, lo, create_at_arc_ends, end, end_slot);
         return;
       }
-      const halfedge_descriptor across = opposite(t.h[e], tm_);
-      if(is_border(across, tm_))
+      f = records_[f].neighbour[e];
+      if(f == border)
         throw Remeshing_error("the input has a border: surfaces with boundary are not "
                               "supported yet");
-      f = face(across, tm_);
     }
   }
 
@@ -404,7 +430,7 @@ private:
 
     if(create_at_arc_ends) {
       const int o = predicates_.projected_orientation(*t.p[0], *t.p[1], *t.p[2], i, j);
-      end = find_or_create(t.f, t.face_id, i, j, k, m, o, true);
+      end = find_or_create(t.face_id, i, j, k, m, o, true);
     } else {
       end = table_.find(Vertex_key{t.face_id, std::int8_t(i), std::int8_t(j), k, m},
                         [this](std::uint32_t id) { return key_of(vertices_[id]); });
@@ -446,12 +472,11 @@ public:
   /// order source(halfedge(f)), target(halfedge(f)), target(next(halfedge(f))).
   std::array<double, 3> barycentric_coordinates(const Vertex& v)
   {
-    const Triangle t = load(face_of_id_[v.face_id]);
+    const Triangle t = load(v.face_id);
     return barycentric(t, v.i, v.j, double(v.k()), double(v.m()));
   }
 
   /// The lattice coordinates of a mapped input vertex (for checks).
-  const Point_d& range_coordinates(vertex_descriptor v) { return u_[u(v)]; }
 
 private:
   using Predicates = Perturbed_predicates<Traits>;
@@ -466,11 +491,19 @@ private:
   Predicates predicates_;
 
   std::vector<std::uint8_t> mapped_;
-  std::unique_ptr<Point_d[]> u_; // left uninitialised: filled on first use only
-  std::unique_ptr<Levels[]> ceilings_; // ceil of u, the first level above each coordinate
+  // u and its ceilings side by side: the tracer reads both for every corner
+  struct Mapped_vertex
+  {
+    Point_d u;
+    Levels ceiling; // the first lattice level above each coordinate (ties: equal)
+  };
+  std::unique_ptr<Mapped_vertex[]> mapped_vertices_; // uninitialised: filled on first use
   std::size_t number_of_mapped_ = 0;
-  std::vector<std::uint8_t> face_visited_;
+  std::vector<vertex_descriptor> vertex_of_id_;
+  std::unique_ptr<Face_record[]> records_; // left uninitialised: filled on first use only
+  std::vector<std::uint8_t> recorded_;
   std::size_t number_of_visited_faces_ = 0;
+  bool seen_border_ = false;
   std::vector<std::uint8_t> seed_marks_;
   std::size_t tracing_steps_ = 0;
 

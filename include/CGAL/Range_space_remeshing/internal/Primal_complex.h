@@ -166,7 +166,8 @@ private:
   {
     // first pinch: a vertex x entered twice, by halfedges `in_1` then `in_2`
     last_visit_.resize(number_of_vertices_, none);
-    std::vector<std::uint32_t> cycle;
+    std::vector<std::uint32_t>& cycle = cycle_;
+    cycle.clear();
     std::uint32_t h = face_halfedge_[f];
     do {
       cycle.push_back(h);
@@ -289,7 +290,7 @@ private:
   std::vector<Halfedge> halfedges_;
   std::vector<std::uint32_t> face_halfedge_;
   std::vector<bool> kept_vertex_;
-  std::vector<std::uint32_t> last_visit_;
+  std::vector<std::uint32_t> last_visit_, cycle_; // scratch of split_at_pinch()
   std::vector<std::uint32_t> unsplittable_faces_;
   std::vector<std::uint32_t> digon_vertices_, split_vertices_; // one vertex of each repair
 

@@ -17,6 +17,7 @@
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -62,6 +63,20 @@ private:
   VertexIndexMap vertex_index_;
 };
 
+template <class PolygonMesh>
+void reserve_if_possible(PolygonMesh&, std::size_t, std::size_t, std::size_t)
+{}
+
+/// Surface_mesh grows its property arrays one element at a time otherwise.
+template <class Point>
+void reserve_if_possible(CGAL::Surface_mesh<Point>& out, std::size_t nv, std::size_t ne,
+                         std::size_t nf)
+{
+  using size_type = typename CGAL::Surface_mesh<Point>::size_type;
+  out.reserve(size_type(num_vertices(out) + nv), size_type(num_edges(out) + ne),
+              size_type(num_faces(out) + nf));
+}
+
 template <class TriangleMesh, class VPM, class VertexIndexMap, class Tracer, class PolygonMesh,
           class NamedParametersOut>
 void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex_index, Tracer& tracer,
@@ -91,6 +106,8 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
 
   const auto& vertices = tracer.vertices();
   const std::uint32_t none = Primal_complex::none;
+  reserve_if_possible(out, vertices.size(), complex.halfedges().size() / 2,
+                      complex.face_halfedges().size());
   std::vector<out_vertex> vertex_of(vertices.size());
   std::size_t number_of_vertices = 0;
   for(std::uint32_t v = 0; v < vertices.size(); ++v) {

@@ -50,7 +50,14 @@ class Vertex_table
   static constexpr std::uint32_t empty = std::uint32_t(-1);
 
 public:
-  Vertex_table() : slots_(1024, empty) {}
+  /// `expected` : an estimate of the number of ids, to avoid rehashing while growing.
+  explicit Vertex_table(std::size_t expected = 512)
+  {
+    std::size_t capacity = 1024;
+    while(capacity < 2 * expected)
+      capacity *= 2;
+    slots_.assign(capacity, empty);
+  }
 
   /// Id stored under `key`, or `empty` (= uint32 max).
   template <class KeyOfId>
