@@ -103,9 +103,9 @@ int main(int argc, char** argv)
   }
 
   std::cout << "| mesh | triangles | vertices | mode | cell size | output vertices | output faces "
-               "| mapped vertices | seeding ms | tracing ms | faces ms | output ms | total ms "
+               "| mapped vertices | visited faces | tracing steps | seeding ms | tracing ms | faces ms | output ms | total ms "
                "(median of " << runs << ") |\n"
-            << "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+            << "|---|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for(const std::string& file : files) {
     Mesh input;
     if(!CGAL::IO::read_polygon_mesh(file, input) || num_faces(input) == 0) {
@@ -119,10 +119,11 @@ int main(int argc, char** argv)
       const auto& s = m.stats;
       char line[512];
       std::snprintf(line, sizeof(line),
-                    "| %s | %zu | %zu | %s | %.5g | %zu | %zu | %zu | %.2f | %.2f | %.2f | %.2f | **%.2f** |",
+                    "| %s | %zu | %zu | %s | %.5g | %zu | %zu | %zu | %zu | %zu | %.2f | %.2f | %.2f | %.2f | **%.2f** |",
                     name.c_str(), num_faces(input), num_vertices(input),
                     seeding == RSR::Seeding_method::SEEDED ? "seeded" : "complete", h,
-                    s.output_vertices, s.output_faces, s.mapped_vertices, s.time_seeding_ms,
+                    s.output_vertices, s.output_faces, s.mapped_vertices, s.visited_faces,
+                    s.tracing_steps, s.time_seeding_ms,
                     s.time_tracing_ms, s.time_faces_ms, s.time_output_ms, m.median_total);
       std::cout << line << std::endl;
     }

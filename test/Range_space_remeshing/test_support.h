@@ -203,7 +203,7 @@ struct Cell_checker
   void operator()(Tracer& tracer, const Complex& complex)
   {
     constexpr int D = Tracer::D;
-    const auto& vertices = tracer.vertices();
+    const auto& vertices = tracer.intersection_vertices();
     const auto& halfedges = complex.halfedges();
     for(std::uint32_t first : complex.face_halfedges()) {
       if(first == Complex::none)

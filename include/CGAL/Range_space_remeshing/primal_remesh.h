@@ -153,7 +153,7 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
     if(tracer.has_seen_border())
       throw Remeshing_error("the input has a border: surfaces with boundary are not "
                             "supported yet");
-    stats.seeds = tracer.vertices().size();
+    stats.seeds = tracer.intersection_vertices().size();
   } else {
     auto seed_range = choose_parameter(get_parameter(np_in, internal_np::seed_faces),
                                        one_face_per_component(tm, face_index));
@@ -165,7 +165,7 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
   tracer.trace(/*create vertices at arc ends*/ seeded);
   stats.time_tracing_ms = milliseconds_since(start);
 
-  const auto& vertices = tracer.vertices();
+  const auto& vertices = tracer.intersection_vertices();
   std::vector<std::uint32_t> links(4 * vertices.size());
   std::vector<bool> positive(vertices.size());
   for(std::size_t v = 0; v < vertices.size(); ++v) {

@@ -91,7 +91,7 @@ public:
   {}
 
   // ---------------------------------------------------------------- results
-  const std::vector<Vertex>& vertices() const { return vertices_; }
+  const std::vector<Vertex>& intersection_vertices() const { return vertices_; }
   face_descriptor face_of(const Vertex& v) const { return face_of_id_[v.face_id]; }
   std::size_t number_of_mapped_vertices() const { return number_of_mapped_; }
   std::size_t number_of_visited_faces() const { return number_of_visited_faces_; }

@@ -104,7 +104,7 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
                                      CGAL::Constant_property_map<out_vertex, Out_vector>());
   Lazy_vertex_normals<TriangleMesh, VPM, VertexIndexMap> input_normals(tm, vpm, vertex_index);
 
-  const auto& vertices = tracer.vertices();
+  const auto& vertices = tracer.intersection_vertices();
   const std::uint32_t none = Primal_complex::none;
   reserve_if_possible(out, vertices.size(), complex.halfedges().size() / 2,
                       complex.face_halfedges().size());
