@@ -4,6 +4,8 @@
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/properties_Polyhedron_3.h>
@@ -242,8 +244,48 @@ void test_errors()
   CHECK(throws_remeshing_error([&] { RSR::primal_remesh(quads, out, params::grid_spacing(0.3)); }));
 }
 
+void test_sampled_geometry()
+{
+  // positions are on the input triangles, normals interpolate the input's
+  const Mesh sphere = make_sphere(1.0, 4);
+  Mesh out;
+  auto normals = out.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:normal").first;
+  RSR::primal_remesh(sphere, out, params::grid_spacing(0.1), params::vertex_normal_map(normals));
+  double worst_radius = 0, worst_alignment = 1;
+  for(auto v : vertices(out)) {
+    const K::Vector_3 p = out.point(v) - CGAL::ORIGIN;
+    const double r = std::sqrt(p.squared_length());
+    worst_radius = std::max(worst_radius, std::abs(r - 1.0));
+    const K::Vector_3 n = normals[v];
+    CHECK(std::abs(n.squared_length() - 1.0) < 1e-9);
+    worst_alignment = std::min(worst_alignment, n * p / r);
+  }
+  std::cout << "sampled geometry: max |radius - 1| = " << worst_radius
+            << ", min normal . radial = " << worst_alignment << std::endl;
+  CHECK(worst_radius < 2e-3);    // chord error of the 5,120-triangle sphere
+  CHECK(worst_alignment > 0.999);
+}
+
+void test_needle()
+{
+  // A long, thin tetrahedron across a hundred thousand cells: the candidate lattice
+  // points of a face are enumerated column by column, not over its bounding box.
+  Mesh needle;
+  const Point a(0, 0, 0), b(1e5, 1e5, 1e5 + 0.5), c(0.05, 0, 0), d(0, 0.05, 0);
+  CGAL::make_tetrahedron(a, b, c, d, needle);
+  if(CGAL::Polygon_mesh_processing::volume(needle) < 0)
+    CGAL::Polygon_mesh_processing::reverse_face_orientations(needle);
+  Mesh out;
+  const auto stats = remesh_and_check(needle, out, params::grid_spacing(1.0));
+  std::cout << "needle: " << stats.output_vertices << " vertices in " << stats.time_total_ms
+            << " ms" << std::endl;
+  CHECK(stats.output_vertices > 0);
+}
+
 int main()
 {
+  test_sampled_geometry();
+  test_needle();
   test_euler_characteristic();
   test_lattice_cube();
   test_appended_coordinates();

@@ -148,6 +148,13 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
   stats.input_faces = num_faces(tm);
   const bool seeded = (seeding == Seeding_method::SEEDED);
   if(!seeded) {
+    // Refuse before building anything when the output would exceed the cap (the
+    // estimate maps every vertex, which the scan needs anyway).
+    const double expected = tracer.expected_number_of_vertices();
+    if(expected > double(maximum_vertices))
+      throw Remeshing_error("the output would have about " + std::to_string(std::llround(expected)) +
+                            " vertices, more than the cap of " + std::to_string(maximum_vertices) +
+                            ": the cell size is too small for this input");
     for(auto f : faces(tm))
       tracer.scan_face(f); // also checks that every face is a triangle
     if(tracer.has_seen_border())

@@ -119,14 +119,37 @@ public:
     for(int a = 0; a < number_of_crossed_axes; ++a)
       for(int b = a + 1; b < number_of_crossed_axes; ++b) {
         const int i = crossed_axes[a], j = crossed_axes[b];
-        for(std::int32_t k = first[i]; k <= last[i]; ++k)
-          for(std::int32_t m = first[j]; m <= last[j]; ++m) {
+        for(std::int32_t k = first[i]; k <= last[i]; ++k) {
+          // Only the lattice points near the column x_i = k of the projected triangle
+          // are candidates: the work is proportional to its area, not its bounding box.
+          std::int32_t m_first = first[j], m_last = last[j];
+          column_range(t, i, j, k, m_first, m_last);
+          for(std::int32_t m = m_first; m <= m_last; ++m) {
             const int o = predicates_.grid_edge_orientation(*t.p[0], *t.p[1], *t.p[2], i, j,
                                                             double(k), double(m));
             if(o != 0)
               find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
           }
+        }
       }
+  }
+
+  /// Expected number of intersection vertices: the number of lattice points in a
+  /// projected triangle is about its area, so the sum of the projected areas over all
+  /// faces and axis pairs predicts the output size before anything is built.
+  double expected_number_of_vertices()
+  {
+    double expected = 0;
+    for(face_descriptor f : faces(tm_)) {
+      const std::uint32_t face_id = std::uint32_t(get(face_index_, f));
+      face_of_id_[face_id] = f;
+      const Triangle t = load(face_id);
+      const Point_d &a = *t.p[0], &b = *t.p[1], &c = *t.p[2];
+      for(int i = 0; i < D; ++i)
+        for(int j = i + 1; j < D; ++j)
+          expected += 0.5 * std::abs((b[i] - a[i]) * (c[j] - a[j]) - (b[j] - a[j]) * (c[i] - a[i]));
+    }
+    return expected;
   }
 
   /// Scans the faces reachable from `seed` across edges, nearest first, until one
@@ -265,6 +288,35 @@ private:
       t.c[e] = &mapped_vertices_[id].ceiling;
     }
     return t;
+  }
+
+  /// Narrows [m_first, m_last] to the levels of axis j near the segment where the
+  /// line x_i = k meets the triangle projected on (i, j). Estimated in doubles and
+  /// widened by one level: the exact test of each candidate decides.
+  void column_range(const Triangle& t, int i, int j, std::int32_t k, std::int32_t& m_first,
+                    std::int32_t& m_last) const
+  {
+    double low = infinity, high = -infinity;
+    for(int e = 0; e < 3; ++e) {
+      const Point_d& p = *t.p[e];
+      const Point_d& q = *t.p[(e + 1) % 3];
+      if((std::min)(p[i], q[i]) > k || (std::max)(p[i], q[i]) < k)
+        continue;
+      double y;
+      if(p[i] == q[i]) {
+        low = (std::min)({low, p[j], q[j]});
+        high = (std::max)({high, p[j], q[j]});
+        continue;
+      }
+      y = p[j] + (double(k) - p[i]) / (q[i] - p[i]) * (q[j] - p[j]);
+      low = (std::min)(low, y);
+      high = (std::max)(high, y);
+    }
+    if(!(low <= high))
+      return; // keep the bounding-box range
+    const double margin = 1. + 1e-9 * (std::abs(low) + std::abs(high));
+    m_first = (std::max)(m_first, std::int32_t(std::floor(low - margin)));
+    m_last = (std::min)(m_last, std::int32_t(std::ceil(high + margin)));
   }
 
   // -------------------------------------------------------------- vertices

@@ -43,11 +43,26 @@ public:
   /// a coordinate equal to `k` counts as below. Never 0.
   static int side(double x, double k) { return x > k ? 1 : -1; }
 
+  /// Exact sign of the orientation of (a, b, c) in the plane. A floating-point
+  /// filter decides when it can (Shewchuk's error bound for this evaluation order);
+  /// the traits' exact predicate decides the rest.
+  int orientation_2(double ax, double ay, double bx, double by, double cx, double cy) const
+  {
+    const double left = (bx - ax) * (cy - ay);
+    const double right = (by - ay) * (cx - ax);
+    const double det = left - right;
+    const double magnitude = std::abs(left) + std::abs(right);
+    // 3.3307e-16 = (3 + 16u) u, u = 2^-53; below 1e-280 underflow could void the bound
+    if(magnitude > 1e-280 && std::abs(det) > 3.3307e-16 * magnitude)
+      return det > 0 ? 1 : -1;
+    return int(orient2_(ax, ay, bx, by, cx, cy));
+  }
+
   /// Exact (unperturbed) orientation of triangle abc projected on axes (a1, a2).
   int projected_orientation(const Point_d& a, const Point_d& b, const Point_d& c,
                             int a1, int a2) const
   {
-    return int(orient2_(a[a1], a[a2], b[a1], b[a2], c[a1], c[a2]));
+    return orientation_2(a[a1], a[a2], b[a1], b[a2], c[a1], c[a2]);
   }
 
   /// Perturbed orientation of (a, b, X) on axes (a1, a2), X the lattice point
@@ -55,7 +70,7 @@ public:
   int perturbed_orientation_2(const Point_d& a, const Point_d& b, int a1, int a2,
                               double x1, double x2) const
   {
-    int s = int(orient2_(a[a1], a[a2], b[a1], b[a2], x1, x2));
+    int s = orientation_2(a[a1], a[a2], b[a1], b[a2], x1, x2);
     if(s != 0)
       return s;
     // d/dx1 = a_2 - b_2, d/dx2 = b_1 - a_1; the smaller axis index dominates.
