@@ -17,27 +17,6 @@ namespace params = CGAL::parameters;
 using RSR::parameters::range_map;
 using RSR::parameters::grid_origin;
 
-// f(p) = (x, y, z, then D-3 fixed generic linear combinations of x, y, z)
-template <int D>
-struct Lifted_map
-{
-  using key_type = Mesh::Vertex_index;
-  using value_type = std::array<double, D>;
-  using reference = value_type;
-  using category = boost::readable_property_map_tag;
-  const Mesh* mesh;
-
-  friend value_type get(const Lifted_map& map, key_type v)
-  {
-    const Point& p = map.mesh->point(v);
-    value_type x;
-    x[0] = p.x(); x[1] = p.y(); x[2] = p.z();
-    for(int q = 3; q < D; ++q)
-      x[q] = (0.31 + 0.07 * q) * p.x() - (0.23 + 0.05 * q) * p.y() + (0.17 - 0.03 * q) * p.z();
-    return x;
-  }
-};
-
 // f(p) = (x, y, z) followed by `extra` given by a function of the position
 template <int D, class Extra>
 struct Appended_map
@@ -136,7 +115,11 @@ template <int D>
 void test_dimension(const Mesh& torus)
 {
   Mesh out;
-  Lifted_map<D> f{&torus};
+  // f(p) = (x, y, z, then D-3 fixed generic linear combinations of x, y, z)
+  auto f = appended<D>(torus, [](const Point& p, std::array<double, D>& x) {
+    for(int q = 3; q < D; ++q)
+      x[q] = (0.31 + 0.07 * q) * p.x() - (0.23 + 0.05 * q) * p.y() + (0.17 - 0.03 * q) * p.z();
+  });
   const auto stats = remesh_and_check(torus, out, range_map(f).grid_spacing(0.15));
   std::cout << "D=" << D << ": " << num_vertices(out) << " vertices, " << stats.digons
             << " digons" << std::endl;
