@@ -180,6 +180,21 @@ void test_determinism_and_seeding()
   CHECK(fine_stats.mapped_vertices * 3 < num_vertices(fine));
   CHECK_EQ(euler_characteristic(out), 2L);
 
+  // a Surface_mesh with removed elements (indices beyond the live count) works
+  {
+    Mesh with_garbage; // a removed triangle first: every live index is shifted
+    const auto u0 = with_garbage.add_vertex(Point(5, 5, 5));
+    const auto u1 = with_garbage.add_vertex(Point(6, 5, 5));
+    const auto u2 = with_garbage.add_vertex(Point(5, 6, 5));
+    const auto dummy = with_garbage.add_face(u0, u1, u2);
+    CGAL::Euler::remove_face(halfedge(dummy, with_garbage), with_garbage);
+    CGAL::copy_face_graph(genus_2, with_garbage);
+    CHECK(with_garbage.has_garbage());
+    Mesh out;
+    remesh_and_check(with_garbage, out, params::grid_spacing(0.13));
+    CHECK(fingerprint(out) == fingerprint(a));
+  }
+
   // the grid origin shifts the lattice
   Mesh shifted;
   remesh_and_check(fine, shifted, grid_origin(std::array<double, 3>{{0.1, 0.05, 0.0}},

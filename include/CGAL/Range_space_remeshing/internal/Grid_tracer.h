@@ -227,6 +227,7 @@ private:
   // -------------------------------------------------------------- the lazy map
   std::size_t u(std::uint32_t id)
   {
+    CGAL_assertion(id < mapped_.size());
     if(!mapped_[id]) {
       const Point_d f = get(range_map_, vertex_of_id_[id]);
       Point_d& x = mapped_vertices_[id].u;
@@ -249,6 +250,7 @@ private:
 
   const Face_record& record(std::uint32_t face_id)
   {
+    CGAL_assertion(face_id < recorded_.size());
     Face_record& r = records_[face_id];
     if(recorded_[face_id])
       return r;
