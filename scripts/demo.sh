@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Builds the command-line program and remeshes CGAL's elephant (from the Debian
-# package libcgal-demo) with the default map; writes build/demo/elephant_primal.off
+# package libcgal-demo) with the default map; writes build/demo/elephant_quads.off
 # and prints the statistics.
 # Usage: scripts/demo.sh [extra options for range_space_remesh]
 set -euo pipefail
@@ -18,5 +18,5 @@ if [ ! -f "$input" ]; then
   tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz -O data/meshes/elephant.off > "$input.part"
   mv "$input.part" "$input"
 fi
-build/bin/range_space_remesh --stats --cell-size 0.01 "$@" "$input" build/demo/elephant_primal.off
-echo "wrote build/demo/elephant_primal.off"
+build/bin/range_space_remesh --stats --cell-size 0.01 "$@" "$input" build/demo/elephant_quads.off
+echo "wrote build/demo/elephant_quads.off"

@@ -8,7 +8,7 @@
 // stderr). The output file is written atomically: it never exists half-written,
 // and is not created on failure.
 
-#include <CGAL/Range_space_remeshing/primal_remesh.h>
+#include <CGAL/Range_space_remeshing/remesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -26,6 +26,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <iostream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -52,8 +53,12 @@ const char* usage =
     "                        diagonal (default 0.01)\n"
     "  --absolute            H is in the map's own units, with the grid origin at 0\n"
     "  --target-vertices N   choose H so that the output has N vertices (within 10%)\n"
-    "  --output primal       the primal remesh: faces are the pieces of the surface\n"
-    "                        in each grid cell, vertices have valence 4 (the default)\n"
+    "  --output KIND         dual (the default): all quads, one vertex per grid-cell\n"
+    "                        piece of the surface; primal: the pieces themselves as\n"
+    "                        polygons, every vertex of valence 4\n"
+    "  --placement NAME      where dual vertices go: qem (the default: closest to the\n"
+    "                        tangent planes of the piece's vertices) or average\n"
+    "  --relax K             K relaxation iterations of the dual (default 3, 0: none)\n"
     "  --seeded              seeded traversal from one face per component: maps only\n"
     "                        the triangles the arcs cross (sublinear), may miss pieces\n"
     "  --stats               print one JSON object with counts and times on stdout\n"
@@ -97,8 +102,9 @@ void fan_triangulate(Mesh& mesh)
 
 struct Options
 {
-  std::string input, output, map = "identity", output_kind = "primal";
+  std::string input, output, map = "identity", output_kind = "dual", placement = "qem";
   double cell_size = 0.01;
+  int relax = 3;
   bool absolute = false, seeded = false, stats = false;
   long target_vertices = 0;
 };
@@ -143,8 +149,17 @@ Options parse_arguments(int argc, char** argv)
       options.target_vertices = long(n);
     } else if(arg == "--output") {
       options.output_kind = value();
-      if(options.output_kind != "primal")
-        fail("unknown output '" + options.output_kind + "' (available: primal)");
+      if(options.output_kind != "primal" && options.output_kind != "dual")
+        fail("unknown output '" + options.output_kind + "' (available: dual, primal)");
+    } else if(arg == "--placement") {
+      options.placement = value();
+      if(options.placement != "qem" && options.placement != "average")
+        fail("unknown placement '" + options.placement + "' (available: qem, average)");
+    } else if(arg == "--relax") {
+      const double k = parse_number(arg, value());
+      if(!(k >= 0) || k != std::floor(k) || k > 1000)
+        fail("--relax expects an integer between 0 and 1000");
+      options.relax = int(k);
     } else if(arg == "--seeded") {
       options.seeded = true;
     } else if(arg == "--stats") {
@@ -260,25 +275,38 @@ std::size_t components(const Mesh& mesh)
       mesh, CGAL::make_property_map(ids));
 }
 
-RSR::Statistics remesh(const Mesh& input, double h, bool seeded, Mesh& output)
+RSR::Remesh_statistics remesh(const Mesh& input, double h, const Options& options, Mesh& output)
 {
   output.clear();
-  const auto seeding = seeded ? RSR::Seeding_method::SEEDED : RSR::Seeding_method::COMPLETE_SCAN;
-  return RSR::primal_remesh(input, output,
-                            CGAL::parameters::grid_spacing(h).seeding_method(seeding));
+  const auto seeding =
+      options.seeded ? RSR::Seeding_method::SEEDED : RSR::Seeding_method::COMPLETE_SCAN;
+  RSR::Remesh_statistics stats;
+  if(options.output_kind == "primal") {
+    stats.primal = RSR::primal_remesh(input, output,
+                                      CGAL::parameters::grid_spacing(h).seeding_method(seeding));
+    stats.time_total_ms = stats.primal.time_total_ms;
+    return stats;
+  }
+  const auto placement =
+      options.placement == "average" ? RSR::Dual_placement::AVERAGE : RSR::Dual_placement::QEM;
+  return RSR::remesh(input, output,
+                     RSR::parameters::dual_placement(placement,
+                                                     CGAL::parameters::grid_spacing(h)
+                                                         .seeding_method(seeding)
+                                                         .number_of_relaxation_steps(options.relax)));
 }
 
 /// Chooses the cell size so that the output has about `target` vertices: the count
 /// goes roughly as 1/h^2, refined by a few secant steps in log-log scale.
 double cell_size_for_target(const Mesh& input, double start, const Options& options, Mesh& output,
-                            RSR::Statistics& stats)
+                            RSR::Remesh_statistics& stats)
 {
   double h = start;
   double previous_h = 0, previous_log_n = 0;
   const double log_target = std::log(double(options.target_vertices));
   for(int iteration = 0; iteration < 12; ++iteration) {
-    stats = remesh(input, h, options.seeded, output);
-    const double n = double(std::max<std::size_t>(stats.output_vertices, 1));
+    stats = remesh(input, h, options, output);
+    const double n = double(std::max<std::size_t>(num_vertices(output), 1));
     if(std::abs(n - options.target_vertices) <= 0.1 * options.target_vertices)
       return h;
     double slope = -2; // d log n / d log h
@@ -292,18 +320,26 @@ double cell_size_for_target(const Mesh& input, double start, const Options& opti
     h = std::exp(std::log(h) + (log_target - std::log(n)) / slope);
   }
   fail("could not reach " + std::to_string(options.target_vertices) +
-       " output vertices within 10% (last try: " + std::to_string(stats.output_vertices) + ")");
+       " output vertices within 10% (last try: " + std::to_string(num_vertices(output)) + ")");
 }
 
 void print_stats(const Options& options, const Mesh& input, const Mesh& output,
-                 const RSR::Statistics& s, double h, bool triangulated)
+                 const RSR::Remesh_statistics& all, double h, bool triangulated)
 {
+  const RSR::Statistics& s = all.primal;
+  std::map<std::size_t, std::size_t> valences;
+  for(auto v : vertices(output))
+    ++valences[degree(v, output)];
+  std::size_t quads = 0;
+  for(auto f : faces(output))
+    quads += (degree(f, output) == 4);
   std::ostringstream json;
   json.precision(6);
   json << "{\"input\": \"" << options.input << "\", \"output\": \"" << options.output << "\""
        << ", \"map\": \"" << options.map << "\", \"D\": 3"
        << ", \"cell_size\": " << h << ", \"seeding\": \"" << (options.seeded ? "seeded" : "complete")
-       << "\", \"output_kind\": \"" << options.output_kind << "\""
+       << "\", \"output_kind\": \"" << options.output_kind << "\", \"placement\": \""
+       << options.placement << "\", \"relaxation_steps\": " << options.relax
        << ", \"triangulated\": " << (triangulated ? "true" : "false")
        << ", \"input_vertices\": " << num_vertices(input) << ", \"input_faces\": " << num_faces(input)
        << ", \"input_components\": " << components(input)
@@ -314,9 +350,19 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
        << ", \"intersection_vertices\": " << s.intersection_vertices
        << ", \"digons\": " << s.digons << ", \"non_simple_faces\": " << s.non_simple_faces
        << ", \"dropped_pieces\": " << s.dropped_pieces
-       << ", \"time_ms\": {\"seeding\": " << s.time_seeding_ms << ", \"tracing\": " << s.time_tracing_ms
+       << ", \"quads\": " << quads << ", \"non_quads\": " << num_faces(output) - quads
+       << ", \"joined_triangle_pairs\": " << all.dual.joined_triangle_pairs
+       << ", \"dual_dropped_pieces\": " << all.dual.dropped_pieces
+       << ", \"valence_histogram\": {";
+  bool first = true;
+  for(const auto& [valence, count] : valences) {
+    json << (first ? "" : ", ") << "\"" << valence << "\": " << count;
+    first = false;
+  }
+  json << "}, \"time_ms\": {\"seeding\": " << s.time_seeding_ms << ", \"tracing\": " << s.time_tracing_ms
        << ", \"faces\": " << s.time_faces_ms << ", \"output\": " << s.time_output_ms
-       << ", \"total\": " << s.time_total_ms << "}}";
+       << ", \"dual\": " << all.dual.time_ms << ", \"relaxation\": " << all.time_relaxation_ms
+       << ", \"total\": " << all.time_total_ms << "}}";
   std::cout << json.str() << std::endl;
 }
 
@@ -345,13 +391,21 @@ int main(int argc, char** argv)
       h *= diagonal;
     }
     Mesh output;
-    RSR::Statistics stats;
+    RSR::Remesh_statistics stats;
     if(options.target_vertices > 0)
       h = cell_size_for_target(input, h, options, output, stats);
     else
-      stats = remesh(input, h, options.seeded, output);
+      stats = remesh(input, h, options, output);
     if(num_faces(output) == 0)
-      fail("the remesh is empty: the cell size is larger than the input");
+      fail("the remesh is empty: at this cell size the surface is not resolved (" +
+           std::to_string(stats.primal.dropped_pieces + stats.dual.dropped_pieces) +
+           " degenerate pieces dropped); use a smaller cell size");
+    if(!CGAL::is_valid_polygon_mesh(output))
+      fail("internal error: the remesh is not a valid polygon mesh; please report it");
+    if(stats.dual.parallel_edges > 0)
+      fail("at this cell size the dual has " + std::to_string(stats.dual.parallel_edges) +
+           " pair(s) of parallel edges, which a mesh file cannot store; use a smaller cell size "
+           "or --output primal");
     write_atomically(output, options.output);
     if(options.stats)
       print_stats(options, input, output, stats, h, triangulated);

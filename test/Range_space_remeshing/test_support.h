@@ -6,7 +6,13 @@
 #include <CGAL/Range_space_remeshing/primal_remesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
@@ -188,6 +194,52 @@ inline double bbox_diagonal(const Mesh& m)
   const auto b = CGAL::Polygon_mesh_processing::bbox(m);
   return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) +
                    CGAL::square(b.zmax() - b.zmin()));
+}
+
+/// Signed volume enclosed by a closed polygon mesh (faces fanned from their first vertex).
+inline double signed_volume(const Mesh& m)
+{
+  double volume = 0;
+  for(auto f : faces(m)) {
+    std::vector<Point> p;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, m), m))
+      p.push_back(m.point(v));
+    for(std::size_t i = 1; i + 1 < p.size(); ++i)
+      volume += CGAL::to_double(CGAL::cross_product(p[i] - CGAL::ORIGIN, p[i + 1] - CGAL::ORIGIN) *
+                                (p[0] - CGAL::ORIGIN)) / 6.;
+  }
+  return volume;
+}
+
+/// Distance from `mesh` to `reference` as METRO measures it: points sampled uniformly
+/// on `mesh` (triangulated copy), each to its closest point on `reference` (AABB
+/// tree); lengths in units of the reference's bounding-box diagonal.
+struct Distance { double rms = 0, max = 0; };
+
+inline Distance distance_to(const Mesh& reference, const Mesh& mesh, std::size_t samples = 100000)
+{
+  Mesh triangles = mesh;
+  CGAL::Polygon_mesh_processing::triangulate_faces(triangles);
+  const double area = CGAL::Polygon_mesh_processing::area(triangles);
+  std::vector<Point> points;
+  CGAL::Polygon_mesh_processing::sample_triangle_mesh(
+      triangles, std::back_inserter(points),
+      CGAL::parameters::number_of_points_per_area_unit(double(samples) / area)
+          .do_sample_vertices(false).do_sample_edges(false).random_seed(7));
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
+  Tree tree(faces(reference).first, faces(reference).second, reference);
+  tree.accelerate_distance_queries();
+  const double diagonal = bbox_diagonal(reference);
+  Distance d;
+  for(const Point& p : points) {
+    const double d2 = CGAL::to_double(tree.squared_distance(p));
+    d.rms += d2;
+    d.max = std::max(d.max, std::sqrt(d2));
+  }
+  d.rms = std::sqrt(d.rms / double(points.size())) / diagonal;
+  d.max /= diagonal;
+  return d;
 }
 
 // ------------------------------------------------------------------ invariants

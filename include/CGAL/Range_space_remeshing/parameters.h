@@ -35,10 +35,22 @@ enum class Seeding_method
   SEEDED
 };
 
+/// Where `dualize()` puts the dual vertex of a primal face.
+enum class Dual_placement
+{
+  /// the average of the face's vertices, with the normalised average normal
+  AVERAGE,
+  /// the minimiser of the squared distances to the tangent planes of the face's
+  /// vertices (dual contouring's quadric error, solved robustly). The default.
+  QEM
+};
+
 namespace internal_np {
 enum range_map_t { range_map };
 enum grid_origin_t { grid_origin };
 enum seed_faces_t { seed_faces };
+enum dual_placement_t { dual_placement };
+enum vertex_tangent_planes_map_t { vertex_tangent_planes_map };
 } // namespace internal_np
 
 namespace parameters {
@@ -64,6 +76,12 @@ CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(range_map)
 CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(grid_origin)
 /// Faces to start from in `Seeding_method::SEEDED` (a range of face descriptors).
 CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(seed_faces)
+
+/// `Dual_placement` of `dualize()`. Default: `Dual_placement::QEM`.
+CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(dual_placement)
+/// A read-write property map, dual vertex -> `Tangent_planes`: the tangent planes
+/// of the primal face, written by `dualize()` and read by `relax_on_tangent_planes()`.
+CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(vertex_tangent_planes_map)
 
 #undef CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER
 

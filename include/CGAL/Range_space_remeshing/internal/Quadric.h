@@ -1,0 +1,140 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUADRIC_H
+#define CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUADRIC_H
+
+// The quadric error of a set of tangent planes (p_i, n_i): Q(x) = sum <n_i, x - p_i>^2,
+// its robust minimiser (dual contouring's truncated pseudo-inverse around the mass
+// point), and its minimiser on a line (the paper's relaxation projection).
+
+#include <array>
+#include <cmath>
+#include <utility>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+namespace internal {
+
+using Vec3 = std::array<double, 3>;
+
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+/// Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations:
+/// a = sum_k values[k] vectors[k] vectors[k]^T, vectors orthonormal.
+inline void symmetric_eigen_3(std::array<std::array<double, 3>, 3> a, Vec3& values,
+                              std::array<Vec3, 3>& vectors)
+{
+  std::array<std::array<double, 3>, 3> v = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  for(int sweep = 0; sweep < 50; ++sweep) {
+    const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
+    const double diagonal = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
+    if(off <= 1e-30 * diagonal || off == 0)
+      break;
+    for(int p = 0; p < 2; ++p)
+      for(int q = p + 1; q < 3; ++q) {
+        if(a[p][q] == 0)
+          continue;
+        const double theta = (a[q][q] - a[p][p]) / (2 * a[p][q]);
+        const double t = (theta >= 0 ? 1. : -1.) / (std::abs(theta) + std::sqrt(theta * theta + 1));
+        const double c = 1 / std::sqrt(t * t + 1), s = t * c;
+        for(int k = 0; k < 3; ++k) { // a <- J^T a J
+          const double akp = a[k][p], akq = a[k][q];
+          a[k][p] = c * akp - s * akq;
+          a[k][q] = s * akp + c * akq;
+        }
+        for(int k = 0; k < 3; ++k) {
+          const double apk = a[p][k], aqk = a[q][k];
+          a[p][k] = c * apk - s * aqk;
+          a[q][k] = s * apk + c * aqk;
+        }
+        for(int k = 0; k < 3; ++k) {
+          const double vkp = v[k][p], vkq = v[k][q];
+          v[k][p] = c * vkp - s * vkq;
+          v[k][q] = s * vkp + c * vkq;
+        }
+      }
+  }
+  for(int k = 0; k < 3; ++k) {
+    values[k] = a[k][k];
+    vectors[k] = {{v[0][k], v[1][k], v[2][k]}};
+  }
+}
+
+/// Accumulates tangent planes; normals need not be unit (zero ones are ignored).
+class Quadric
+{
+public:
+  void add_plane(const Vec3& p, const Vec3& n)
+  {
+    const double length2 = dot(n, n);
+    if(!(length2 > 0))
+      return;
+    const double d = dot(n, p) / length2; // unit normal u = n/|n|: u u^T, u u^T p
+    for(int r = 0; r < 3; ++r) {
+      for(int c = 0; c < 3; ++c)
+        a_[r][c] += n[r] * n[c] / length2;
+      b_[r] += n[r] * d;
+    }
+    ++planes_;
+  }
+
+  int number_of_planes() const { return planes_; }
+
+  /// Minimiser of the quadric, regularised towards `mass_point`: directions whose
+  /// eigenvalue is below `truncation` times the largest are left at the mass point
+  /// (a flat region has one constrained direction, a crease two, a corner three).
+  Vec3 minimiser(const Vec3& mass_point, double truncation = 0.1) const
+  {
+    if(planes_ == 0)
+      return mass_point;
+    Vec3 values;
+    std::array<Vec3, 3> vectors;
+    symmetric_eigen_3(a_, values, vectors);
+    const double largest = std::max({std::abs(values[0]), std::abs(values[1]), std::abs(values[2])});
+    // residual at the mass point: b - A c
+    Vec3 r = b_;
+    for(int i = 0; i < 3; ++i)
+      for(int j = 0; j < 3; ++j)
+        r[i] -= a_[i][j] * mass_point[j];
+    Vec3 x = mass_point;
+    for(int k = 0; k < 3; ++k) {
+      if(!(values[k] > truncation * largest) || !(largest > 0))
+        continue;
+      const double step = dot(vectors[k], r) / values[k];
+      for(int i = 0; i < 3; ++i)
+        x[i] += step * vectors[k][i];
+    }
+    return x;
+  }
+
+private:
+  std::array<std::array<double, 3>, 3> a_ = {};
+  Vec3 b_ = {};
+  int planes_ = 0;
+};
+
+/// The paper's projection: the minimiser of sum <p_i - (x + lambda n), n_i>^2 +
+/// epsilon lambda^2 over lambda, for a unit direction n. Returns lambda.
+template <class PlaneRange>
+double line_minimiser(const Vec3& x, const Vec3& n, const PlaneRange& planes, double epsilon)
+{
+  double numerator = 0, denominator = epsilon;
+  for(const auto& plane : planes) {
+    const Vec3& p = plane.first;
+    const Vec3& ni = plane.second;
+    const Vec3 d = {{p[0] - x[0], p[1] - x[1], p[2] - x[2]}};
+    const double cosine = dot(n, ni);
+    numerator += dot(d, ni) * cosine;
+    denominator += cosine * cosine;
+  }
+  return numerator / denominator;
+}
+
+} // namespace internal
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUADRIC_H

@@ -1,0 +1,124 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_RELAX_ON_TANGENT_PLANES_H
+#define CGAL_RANGE_SPACE_REMESHING_RELAX_ON_TANGENT_PLANES_H
+
+#include <CGAL/Range_space_remeshing/dualize.h>
+#include <CGAL/Range_space_remeshing/internal/Quadric.h>
+
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <chrono>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
+relaxes the vertices of `mesh` over the surface they sample (section 6 of the paper).
+Each of the `number_of_iterations` iterations (a) replaces every vertex's position
+and normal by the average of its neighbours' (the normal renormalised), which spreads
+the vertices evenly but shrinks and smooths, then (b) moves it back along the line
+\f$v' + \lambda n'\f$ to the minimiser of the squared distances to its tangent planes,
+\f$\lambda = \sum \langle v_i - v', n_i\rangle \langle n', n_i\rangle / (\sum \langle n', n_i\rangle^2 + \epsilon)\f$,
+which undoes the shrinking: vertices slide on the surface, features stay.
+
+\param mesh a polygon mesh whose vertices carry tangent planes (e.g. the output of
+  `dualize()`); positions (and normals if given) are updated.
+\param tangent_planes a readable property map, vertex -> `Tangent_planes`.
+\param np `number_of_iterations` (default 3), `vertex_point_map`, `vertex_normal_map`
+  (read-write; default: the average normal of each vertex's tangent planes).
+\returns the time taken, in milliseconds.
+*/
+template <class PolygonMesh, class TangentPlanesMap,
+          class NamedParameters = CGAL::parameters::Default_named_parameters>
+double relax_on_tangent_planes(PolygonMesh& mesh, TangentPlanesMap tangent_planes,
+                               const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  using internal::Vec3;
+
+  const auto start = std::chrono::steady_clock::now();
+  const int iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 3);
+  using VPM = typename GetVertexPointMap<PolygonMesh, NamedParameters>::type;
+  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                             get_property_map(CGAL::vertex_point, mesh));
+  using Point = typename boost::property_traits<VPM>::value_type;
+  using Vector = typename CGAL::Kernel_traits<Point>::Kernel::Vector_3;
+  constexpr bool has_normals =
+      !is_default_parameter<NamedParameters, CGAL::internal_np::vertex_normal_map_t>::value;
+  auto normal_map = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_normal_map),
+                                     CGAL::Constant_property_map<vertex_descriptor, Vector>());
+  auto vertex_index = CGAL::get_initialized_vertex_index_map(mesh, np);
+
+  const std::size_t n = num_vertices(mesh);
+  std::vector<Vec3> position(n), normal(n), next_position(n), next_normal(n);
+  for(vertex_descriptor v : vertices(mesh)) {
+    const std::size_t i = get(vertex_index, v);
+    position[i] = internal::to_vec3(get(vpm, v));
+    Vec3 average = {{0, 0, 0}};
+    if constexpr(has_normals)
+      average = internal::to_vec3(get(normal_map, v));
+    else
+      for(const auto& plane : get(tangent_planes, v))
+        for(int d = 0; d < 3; ++d)
+          average[d] += plane.second[d];
+    normal[i] = internal::normalized(average);
+  }
+
+  constexpr double epsilon = 1e-3; // the weak extra plane at (v', n'): never singular
+  for(int iteration = 0; iteration < iterations; ++iteration) {
+    for(vertex_descriptor v : vertices(mesh)) {
+      const std::size_t i = get(vertex_index, v);
+      Vec3 p = {{0, 0, 0}}, m = {{0, 0, 0}};
+      int count = 0;
+      for(vertex_descriptor w : CGAL::vertices_around_target(halfedge(v, mesh), mesh)) {
+        const std::size_t j = get(vertex_index, w);
+        for(int d = 0; d < 3; ++d) {
+          p[d] += position[j][d];
+          m[d] += normal[j][d];
+        }
+        ++count;
+      }
+      for(int d = 0; d < 3; ++d)
+        p[d] /= count;
+      m = internal::normalized(m);
+      const auto& planes = get(tangent_planes, v);
+      if(planes.empty() || m == Vec3{{0, 0, 0}}) { // nothing to project on: keep the vertex
+        next_position[i] = position[i];
+        next_normal[i] = normal[i];
+        continue;
+      }
+      const double lambda = internal::line_minimiser(p, m, planes, epsilon);
+      for(int d = 0; d < 3; ++d)
+        next_position[i][d] = p[d] + lambda * m[d];
+      next_normal[i] = m;
+    }
+    position.swap(next_position);
+    normal.swap(next_normal);
+  }
+
+  for(vertex_descriptor v : vertices(mesh)) {
+    const std::size_t i = get(vertex_index, v);
+    put(vpm, v, Point(position[i][0], position[i][1], position[i][2]));
+    if constexpr(has_normals)
+      put(normal_map, v, Vector(normal[i][0], normal[i][1], normal[i][2]));
+  }
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_RELAX_ON_TANGENT_PLANES_H

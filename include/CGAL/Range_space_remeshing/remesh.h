@@ -1,0 +1,92 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_REMESH_H
+#define CGAL_RANGE_SPACE_REMESHING_REMESH_H
+
+#include <CGAL/Range_space_remeshing/dualize.h>
+#include <CGAL/Range_space_remeshing/primal_remesh.h>
+#include <CGAL/Range_space_remeshing/relax_on_tangent_planes.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/properties.h>
+
+#include <chrono>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+What a run of `remesh()` did, stage by stage.
+*/
+struct Remesh_statistics
+{
+  Statistics primal;
+  Dual_statistics dual;
+  double time_relaxation_ms = 0;
+  double time_total_ms = 0;
+};
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
+The whole pipeline: `primal_remesh()` of `tm`, `dualize()` of the result into
+`quads`, then `relax_on_tangent_planes()`.
+
+\param np the named parameters of `primal_remesh()` (`range_map`, `grid_spacing`,
+  `grid_origin`, `seeding_method`, `seed_faces`, `maximum_number`,
+  `vertex_point_map`, `geom_traits`), plus `dual_placement` (default
+  `Dual_placement::QEM`) and `number_of_relaxation_steps` (default 3).
+\param np_out `vertex_point_map` of `quads`.
+*/
+template <class TriangleMesh, class QuadMesh,
+          class NamedParameters = CGAL::parameters::Default_named_parameters,
+          class NamedParametersOut = CGAL::parameters::Default_named_parameters>
+Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
+                         const NamedParameters& np = CGAL::parameters::default_values(),
+                         const NamedParametersOut& np_out = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using Primal = CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3>;
+  using Vector = CGAL::Exact_predicates_inexact_constructions_kernel::Vector_3;
+  using Out_VPM = typename GetVertexPointMap<QuadMesh, NamedParametersOut>::type;
+  using Out_vector =
+      typename CGAL::Kernel_traits<typename boost::property_traits<Out_VPM>::value_type>::Kernel::Vector_3;
+
+  const auto start = std::chrono::steady_clock::now();
+  Remesh_statistics stats;
+  Primal primal;
+  auto primal_normals = primal.add_property_map<typename Primal::Vertex_index, Vector>("v:normal").first;
+  stats.primal = primal_remesh(tm, primal, np, CGAL::parameters::vertex_normal_map(primal_normals));
+
+  const Out_VPM out_vpm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
+                                           get_property_map(CGAL::vertex_point, quads));
+  auto planes = get(CGAL::dynamic_vertex_property_t<Tangent_planes>(), quads);
+  auto normals = get(CGAL::dynamic_vertex_property_t<Out_vector>(), quads);
+  const Dual_placement placement =
+      choose_parameter(get_parameter(np, internal_np::dual_placement), Dual_placement::QEM);
+  stats.dual = dualize(primal, quads,
+                       parameters::dual_placement(placement,
+                                                  CGAL::parameters::vertex_normal_map(primal_normals)),
+                       parameters::vertex_tangent_planes_map(
+                           planes, CGAL::parameters::vertex_normal_map(normals).vertex_point_map(out_vpm)));
+
+  const int steps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 3);
+  if(steps > 0)
+    stats.time_relaxation_ms = relax_on_tangent_planes(
+        quads, planes,
+        CGAL::parameters::number_of_iterations(steps).vertex_normal_map(normals).vertex_point_map(out_vpm));
+  stats.time_total_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_REMESH_H
