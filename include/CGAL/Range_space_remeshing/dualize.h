@@ -104,11 +104,14 @@ template <class Mesh>
 std::size_t number_of_parallel_edges(const Mesh& mesh)
 {
   std::size_t parallel = 0;
+  std::vector<typename boost::graph_traits<Mesh>::vertex_descriptor> neighbours;
   for(auto v : vertices(mesh)) {
-    std::set<typename boost::graph_traits<Mesh>::vertex_descriptor> neighbours;
-    for(auto w : CGAL::vertices_around_target(halfedge(v, mesh), mesh))
-      if(!neighbours.insert(w).second && v < w)
+    neighbours.clear();
+    for(auto w : CGAL::vertices_around_target(halfedge(v, mesh), mesh)) {
+      if(v < w && std::find(neighbours.begin(), neighbours.end(), w) != neighbours.end())
         ++parallel;
+      neighbours.push_back(w);
+    }
   }
   return parallel;
 }
@@ -144,8 +147,10 @@ std::size_t remove_pieces_with_non_simple_faces(Mesh& mesh, std::size_t& number_
     corners.clear();
     for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
       corners.push_back(v);
-    std::sort(corners.begin(), corners.end());
-    if(corners.size() < 3 || std::adjacent_find(corners.begin(), corners.end()) != corners.end())
+    bool repeated = corners.size() < 3;
+    for(std::size_t i = 0; i < corners.size() && !repeated; ++i)
+      repeated = std::find(corners.begin() + i + 1, corners.end(), corners[i]) != corners.end();
+    if(repeated)
       degenerate.push_back(f);
   }
   std::size_t pieces = 0;
