@@ -62,18 +62,6 @@ struct Dual_statistics
 
 namespace internal {
 
-template <class Point>
-Vec3 to_vec3(const Point& p)
-{
-  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-}
-
-inline Vec3 normalized(const Vec3& v)
-{
-  const double length = std::sqrt(dot(v, v));
-  return length > 0 ? Vec3{{v[0] / length, v[1] / length, v[2] / length}} : Vec3{{0, 0, 0}};
-}
-
 /// Position and normal of the dual vertex of a primal face with tangent planes `planes`.
 inline std::pair<Vec3, Vec3> place_dual_vertex(const Tangent_planes& planes, Dual_placement placement)
 {

@@ -13,6 +13,7 @@
 
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
+#include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
@@ -133,9 +134,8 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
     const out_vertex ov = add_vertex(out);
     put(out_vpm, ov, Out_point(p[0], p[1], p[2]));
     if constexpr(wants_normals) {
-      const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      const double scale = length > 0 ? 1. / length : 0.; // zero-area corners: no normal
-      put(normal_map, ov, Out_vector(n[0] * scale, n[1] * scale, n[2] * scale));
+      const Vec3 unit = normalized(n); // zero-area corners: the zero vector
+      put(normal_map, ov, Out_vector(unit[0], unit[1], unit[2]));
     }
     vertex_of[v] = ov;
     ++number_of_vertices;

@@ -8,7 +8,10 @@
 
 // The quadric error of a set of tangent planes (p_i, n_i): Q(x) = sum <n_i, x - p_i>^2,
 // its robust minimiser (dual contouring's truncated pseudo-inverse around the mass
-// point), and its minimiser on a line (the paper's relaxation projection).
+// point), and its minimiser on a line (the paper's relaxation projection); plus the
+// small 3-vector helpers the output writers share.
+
+#include <CGAL/number_utils.h>
 
 #include <array>
 #include <cmath>
@@ -21,6 +24,19 @@ namespace internal {
 using Vec3 = std::array<double, 3>;
 
 inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+
+template <class Point>
+Vec3 to_vec3(const Point& p)
+{
+  return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+}
+
+inline Vec3 normalized(const Vec3& v)
+{
+  const double length = std::sqrt(dot(v, v));
+  return length > 0 ? Vec3{{v[0] / length, v[1] / length, v[2] / length}} : Vec3{{0, 0, 0}};
+}
+
 
 /// Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations:
 /// a = sum_k values[k] vectors[k] vectors[k]^T, vectors orthonormal.
