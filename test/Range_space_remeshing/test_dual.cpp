@@ -1,9 +1,15 @@
-// The dual quad mesh and the relaxation: validity, all quads, Euler characteristic,
-// orientation, distance to the input for both placements, no shrinking.
+// The dual quad mesh, the quad collapse and the relaxation: validity, all quads,
+// Euler characteristic, orientation, distance to the input for both placements,
+// valence regularity, no fold-over, no shrinking.
 #include "test_support.h"
 
 #include <CGAL/Range_space_remeshing/dualize.h>
+#include <CGAL/Range_space_remeshing/quad_collapse.h>
 #include <CGAL/Range_space_remeshing/relax_on_tangent_planes.h>
+
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polyhedron_items_with_id_3.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -19,6 +25,29 @@ struct Dual_run
   Mesh quads;
   RSR::Dual_statistics stats;
 };
+
+double valence_4_share(const Mesh& m)
+{
+  std::size_t regular = 0;
+  for(auto v : vertices(m))
+    regular += (degree(v, m) == 4);
+  return double(regular) / double(num_vertices(m));
+}
+
+/// Faces that are not convex polygons (with respect to their own normal), by the
+/// collapse's own criterion: it never makes a convex face non-convex.
+std::size_t non_convex_faces(const Mesh& m)
+{
+  std::size_t non_convex = 0;
+  std::vector<RSR::internal::Vec3> corners;
+  for(auto f : faces(m)) {
+    corners.clear();
+    for(auto v : CGAL::vertices_around_face(halfedge(f, m), m))
+      corners.push_back(RSR::internal::to_vec3(m.point(v)));
+    non_convex += !RSR::internal::is_convex(corners, RSR::internal::newell_normal(corners));
+  }
+  return non_convex;
+}
 
 Dual_run dual_of(const Mesh& primal, Mesh::Property_map<Mesh::Vertex_index, Vector> normals,
                  RSR::Dual_placement placement)
@@ -40,6 +69,29 @@ Dual_run dual_of(const Mesh& primal, Mesh::Property_map<Mesh::Vertex_index, Vect
   CHECK_EQ(quads, num_faces(run.quads));
   CHECK_EQ(euler_characteristic(run.quads), euler_characteristic(primal));
   return run;
+}
+
+/// What every collapse must keep: a valid closed all-quad manifold, the Euler
+/// characteristic, no parallel edge, no new non-convex face, one face and one vertex
+/// less per collapse.
+void check_collapsed(const Mesh& before, const Mesh& after, const RSR::Collapse_statistics& stats)
+{
+  CHECK(CGAL::is_valid_polygon_mesh(after));
+  CHECK(CGAL::is_closed(after));
+  for(auto f : faces(after))
+    CHECK_EQ(degree(f, after), std::size_t(4));
+  auto doublets = [](const Mesh& m) {
+    std::size_t n = 0;
+    for(auto v : vertices(m))
+      n += (degree(v, m) < 3);
+    return n;
+  };
+  CHECK(doublets(after) <= doublets(before));
+  CHECK_EQ(euler_characteristic(after), euler_characteristic(before));
+  CHECK_EQ(RSR::internal::number_of_parallel_edges(after), std::size_t(0));
+  CHECK_EQ(num_faces(after), num_faces(before) - stats.collapsed_quads);
+  CHECK_EQ(num_vertices(after), num_vertices(before) - stats.collapsed_quads);
+  CHECK(non_convex_faces(after) <= non_convex_faces(before));
 }
 
 void check_input(const std::string& name, const Mesh& input, double relative_cell_size)
@@ -66,15 +118,32 @@ void check_input(const std::string& name, const Mesh& input, double relative_cel
             << d_average.rms << " (max " << d_qem.max << " vs " << d_average.max << ")" << std::endl;
   CHECK(d_qem.rms < d_average.rms);
 
+  // quad collapse: more regular valences, still a closed all-quad manifold
+  Mesh collapsed = qem.quads;
+  auto collapsed_planes = collapsed.property_map<Mesh::Vertex_index, RSR::Tangent_planes>("v:planes").first;
+  auto collapsed_normals = collapsed.property_map<Mesh::Vertex_index, Vector>("v:normal").first;
+  const RSR::Collapse_statistics cs = RSR::collapse_quads(
+      collapsed, RSR::parameters::vertex_tangent_planes_map(
+                     collapsed_planes, params::vertex_normal_map(collapsed_normals)));
+  check_collapsed(qem.quads, collapsed, cs);
+  const Distance d_collapsed = distance_to(input, collapsed);
+  std::cout << "  collapsed " << cs.collapsed_quads << " quads in " << cs.passes << " passes ("
+            << cs.refused_topology << " refused by topology, " << cs.refused_fold_over
+            << " by fold-over): valence 4 " << 100 * valence_4_share(qem.quads) << " % -> "
+            << 100 * valence_4_share(collapsed) << " %, RMS " << d_collapsed.rms << ", non-convex faces "
+            << non_convex_faces(qem.quads) << " -> " << non_convex_faces(collapsed) << std::endl;
+  CHECK(valence_4_share(collapsed) > valence_4_share(qem.quads));
+  CHECK(d_collapsed.rms < 1.5 * d_qem.rms);
+
   // relaxation: evens out the edges without shrinking
-  Mesh relaxed = qem.quads;
+  Mesh relaxed = collapsed;
   auto planes = relaxed.property_map<Mesh::Vertex_index, RSR::Tangent_planes>("v:planes").first;
   auto dual_normals = relaxed.property_map<Mesh::Vertex_index, Vector>("v:normal").first;
   RSR::relax_on_tangent_planes(relaxed, planes, params::number_of_iterations(3).vertex_normal_map(dual_normals));
   CHECK(CGAL::is_valid_polygon_mesh(relaxed));
-  const double volume_before = signed_volume(qem.quads);
+  const double volume_before = signed_volume(collapsed);
   const double volume_after = signed_volume(relaxed);
-  const double diagonal_before = bbox_diagonal(qem.quads), diagonal_after = bbox_diagonal(relaxed);
+  const double diagonal_before = bbox_diagonal(collapsed), diagonal_after = bbox_diagonal(relaxed);
   auto spread = [](const Mesh& m) {
     double sum = 0, sum2 = 0;
     for(auto e : edges(m)) {
@@ -87,11 +156,11 @@ void check_input(const std::string& name, const Mesh& input, double relative_cel
   };
   const Distance d_relaxed = distance_to(input, relaxed);
   std::cout << "  relaxed: volume " << volume_after / volume_before << " of the dual's, bbox diagonal "
-            << diagonal_after / diagonal_before << ", edge-length spread " << spread(qem.quads)
+            << diagonal_after / diagonal_before << ", edge-length spread " << spread(collapsed)
             << " -> " << spread(relaxed) << ", RMS " << d_relaxed.rms << std::endl;
   CHECK(std::abs(volume_after / volume_before - 1) < 0.005);
   CHECK(std::abs(diagonal_after / diagonal_before - 1) < 0.005);
-  CHECK(spread(relaxed) < spread(qem.quads));
+  CHECK(spread(relaxed) < spread(collapsed));
 }
 
 void test_symmetric_eigen()
@@ -149,10 +218,76 @@ void test_quad_cube()
   CHECK_EQ(stats.quads, num_vertices(cube) - 8);
 }
 
+/// Quad meshes the collapse did not produce: a regular subdivided cube, where no
+/// collapse lowers the energy; a dual collapsed as Surface_mesh and as Polyhedron_3
+/// alike; constrained vertices; bad input.
+void test_collapse_on_other_meshes()
+{
+  Mesh cube = make_lattice_cube(3);
+  std::vector<Mesh::Edge_index> diagonals;
+  for(auto e : edges(cube)) {
+    const auto h = halfedge(e, cube);
+    const Vector d = cube.point(target(h, cube)) - cube.point(source(h, cube));
+    if(std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()) > 1.5)
+      diagonals.push_back(e);
+  }
+  for(auto e : diagonals)
+    CGAL::Euler::join_face(halfedge(e, cube), cube);
+  cube.collect_garbage();
+  const std::string cube_before = fingerprint(cube);
+  const auto on_cube = RSR::collapse_quads(cube); // planes and normals from the mesh itself
+  CHECK_EQ(on_cube.collapsed_quads, std::size_t(0));
+  CHECK_EQ(on_cube.passes, std::size_t(1));
+  CHECK(fingerprint(cube) == cube_before);
+
+  // an irregular dual: the same collapses on Surface_mesh and on Polyhedron_3
+  const Mesh input = make_torus(1.0, 0.4, 120, 60);
+  Mesh primal;
+  auto normals = primal.add_property_map<Mesh::Vertex_index, Vector>("v:normal").first;
+  RSR::primal_remesh(input, primal, params::grid_spacing(0.05), params::vertex_normal_map(normals));
+  Mesh quads;
+  RSR::dualize(primal, quads, params::vertex_normal_map(normals));
+  using Polyhedron = CGAL::Polyhedron_3<K, CGAL::Polyhedron_items_with_id_3>;
+  Polyhedron polyhedron;
+  CGAL::copy_face_graph(quads, polyhedron);
+  Mesh twice = quads;
+  const auto on_mesh = RSR::collapse_quads(quads);
+  const auto on_polyhedron = RSR::collapse_quads(polyhedron);
+  RSR::collapse_quads(twice);
+  std::cout << "torus dual: " << on_mesh.collapsed_quads << " collapses (Surface_mesh), "
+            << on_polyhedron.collapsed_quads << " (Polyhedron_3)" << std::endl;
+  CHECK(on_mesh.collapsed_quads > 0);
+  CHECK_EQ(on_polyhedron.collapsed_quads, on_mesh.collapsed_quads);
+  CHECK_EQ(num_vertices(polyhedron), num_vertices(quads));
+  CHECK(CGAL::is_valid_polygon_mesh(polyhedron));
+  CHECK(fingerprint(twice) == fingerprint(quads)); // deterministic
+
+  Mesh constrained_copy;
+  RSR::dualize(primal, constrained_copy, params::vertex_normal_map(normals));
+  const auto none = RSR::collapse_quads(
+      constrained_copy,
+      params::vertex_is_constrained_map(CGAL::Constant_property_map<Mesh::Vertex_index, bool>(true)));
+  CHECK_EQ(none.collapsed_quads, std::size_t(0));
+
+  auto throws = [](Mesh m) {
+    try {
+      RSR::collapse_quads(m);
+    } catch(const RSR::Remeshing_error&) {
+      return true;
+    }
+    return false;
+  };
+  CHECK(throws(Mesh()));
+  Mesh open_quad;
+  CGAL::make_quad(Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0), open_quad);
+  CHECK(throws(open_quad));
+}
+
 int main(int argc, char** argv)
 {
   test_symmetric_eigen();
   test_quad_cube();
+  test_collapse_on_other_meshes();
   check_input("sphere", make_sphere(1.0, 4), 0.03);
   check_input("torus", make_torus(1.0, 0.4, 120, 60), 0.03);
   check_input("genus 2", make_genus_2(3), 0.02);

@@ -48,6 +48,48 @@ struct Statistics
   double time_total_ms = 0;
 };
 
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+What a run of `dualize()` did.
+*/
+struct Dual_statistics
+{
+  std::size_t dual_vertices = 0;
+  std::size_t dual_faces = 0;
+  std::size_t quads = 0;
+  /// pairs of triangles (duals of the two valence-3 ends of a merged digon) joined into a quad
+  std::size_t joined_triangle_pairs = 0;
+  /// faces that are not quads (duals of primal vertices of valence other than 4 that
+  /// could not be paired)
+  std::size_t non_quads = 0;
+  /// pieces whose dual cannot be a polygon mesh (e.g. a pillow of two faces whose
+  /// vertices all have valence 2), removed
+  std::size_t dropped_pieces = 0;
+  /// pairs of distinct edges joining the same two vertices (where two primal faces
+  /// share two edges, at coarse cell sizes): valid in the halfedge structure, but a
+  /// file format that stores faces as vertex lists cannot keep them apart
+  std::size_t parallel_edges = 0;
+  double time_ms = 0;
+};
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+What a run of `collapse_quads()` did.
+*/
+struct Collapse_statistics
+{
+  /// quads collapsed along a diagonal (each removes one face and one vertex)
+  std::size_t collapsed_quads = 0;
+  /// passes over the candidates, the last of which collapsed nothing (or hit the limit)
+  std::size_t passes = 0;
+  /// collapses that would lower the valence energy but were refused because the result
+  /// would not be a valid manifold (link condition, doublet), summed over the passes
+  std::size_t refused_topology = 0;
+  /// ... refused because a face around the merged vertex would fold over
+  std::size_t refused_fold_over = 0;
+  double time_ms = 0;
+};
+
 } // namespace Range_space_remeshing
 } // namespace CGAL
 

@@ -7,7 +7,10 @@
 #define CGAL_RANGE_SPACE_REMESHING_DUALIZE_H
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/Statistics.h>
+#include <CGAL/Range_space_remeshing/Tangent_planes.h>
 #include <CGAL/Range_space_remeshing/parameters.h>
+#include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -18,7 +21,6 @@
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
-#include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 
 #include <algorithm>
 #include <set>
@@ -31,34 +33,6 @@
 
 namespace CGAL {
 namespace Range_space_remeshing {
-
-/// The tangent planes (point, normal) of the primal vertices of a dual vertex's
-/// primal face: what the relaxation projects on.
-using Tangent_planes = std::vector<std::pair<std::array<double, 3>, std::array<double, 3>>>;
-
-/*!
-\ingroup PkgRangeSpaceRemeshingRef
-What a run of `dualize()` did.
-*/
-struct Dual_statistics
-{
-  std::size_t dual_vertices = 0;
-  std::size_t dual_faces = 0;
-  std::size_t quads = 0;
-  /// pairs of triangles (duals of the two valence-3 ends of a merged digon) joined into a quad
-  std::size_t joined_triangle_pairs = 0;
-  /// faces that are not quads (duals of primal vertices of valence other than 4 that
-  /// could not be paired)
-  std::size_t non_quads = 0;
-  /// pieces whose dual cannot be a polygon mesh (e.g. a pillow of two faces whose
-  /// vertices all have valence 2), removed
-  std::size_t dropped_pieces = 0;
-  /// pairs of distinct edges joining the same two vertices (where two primal faces
-  /// share two edges, at coarse cell sizes): valid in the halfedge structure, but a
-  /// file format that stores faces as vertex lists cannot keep them apart
-  std::size_t parallel_edges = 0;
-  double time_ms = 0;
-};
 
 namespace internal {
 
@@ -76,15 +50,6 @@ inline std::pair<Vec3, Vec3> place_dual_vertex(const Tangent_planes& planes, Dua
   }
   const Vec3 position = placement == Dual_placement::QEM ? quadric.minimiser(mass) : mass;
   return {position, normalized(normal)};
-}
-
-template <class Mesh>
-void collect_garbage_if_any(Mesh&) {}
-template <class P>
-void collect_garbage_if_any(CGAL::Surface_mesh<P>& m)
-{
-  if(m.has_garbage())
-    m.collect_garbage();
 }
 
 /// Number of edges that join the same two vertices as another edge.

@@ -38,6 +38,24 @@ inline Vec3 normalized(const Vec3& v)
 }
 
 
+/// The sum of the normals of a range of tangent planes (point, normal), not normalised.
+template <class PlaneRange>
+Vec3 average_normal(const PlaneRange& planes)
+{
+  Vec3 sum = {{0, 0, 0}};
+  for(const auto& plane : planes)
+    for(int d = 0; d < 3; ++d)
+      sum[d] += plane.second[d];
+  return sum;
+}
+
+inline Vec3 difference(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
+
+inline Vec3 cross(const Vec3& a, const Vec3& b)
+{
+  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+}
+
 /// Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations:
 /// a = sum_k values[k] vectors[k] vectors[k]^T, vectors orthonormal.
 inline void symmetric_eigen_3(std::array<std::array<double, 3>, 3> a, Vec3& values,
@@ -141,7 +159,7 @@ double line_minimiser(const Vec3& x, const Vec3& n, const PlaneRange& planes, do
   for(const auto& plane : planes) {
     const Vec3& p = plane.first;
     const Vec3& ni = plane.second;
-    const Vec3 d = {{p[0] - x[0], p[1] - x[1], p[2] - x[2]}};
+    const Vec3 d = difference(p, x);
     const double cosine = dot(n, ni);
     numerator += dot(d, ni) * cosine;
     denominator += cosine * cosine;

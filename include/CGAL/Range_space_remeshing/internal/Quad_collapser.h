@@ -1,0 +1,328 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUAD_COLLAPSER_H
+#define CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUAD_COLLAPSER_H
+
+// The quad collapse of section 6 of the paper, on any MutableFaceGraph. A quad
+// (a, b, c, d) with halfedges h0 = a->b, h1 = b->c, h2 = c->d, h3 = d->a is collapsed
+// along (a, c) by merging c into a: h0 takes the place of opposite(h1) and h3 the
+// place of opposite(h2), so edges a-b, b-c become one and so do c-d, d-a; the quad,
+// the edges of h1 and h2, and c are removed. Only pointers are rewired: no new
+// element, so descriptors and indices of the survivors stay valid.
+
+#include <CGAL/Range_space_remeshing/Statistics.h>
+#include <CGAL/Range_space_remeshing/Tangent_planes.h>
+#include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
+#include <CGAL/Range_space_remeshing/internal/Quadric.h>
+
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+namespace internal {
+
+/// Twice the vector area of a polygon (Newell's normal).
+inline Vec3 newell_normal(const std::vector<Vec3>& polygon)
+{
+  Vec3 n = {{0, 0, 0}};
+  for(std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec3& p = polygon[i];
+    const Vec3& q = polygon[(i + 1) % polygon.size()];
+    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+  }
+  return n;
+}
+
+/// Whether the polygon turns left at every corner, seen from the side of `normal`.
+inline bool is_convex(const std::vector<Vec3>& polygon, const Vec3& normal)
+{
+  const std::size_t n = polygon.size();
+  for(std::size_t i = 0; i < n; ++i) {
+    const Vec3& p = polygon[(i + n - 1) % n];
+    const Vec3& q = polygon[i];
+    const Vec3& r = polygon[(i + 1) % n];
+    if(!(dot(cross(difference(q, p), difference(r, q)), normal) > 0))
+      return false;
+  }
+  return true;
+}
+
+/// Whether every triangle of the fan from the polygon's first corner turns left, seen
+/// from the side of `normal`.
+inline bool fan_turns_with(const std::vector<Vec3>& polygon, const Vec3& normal)
+{
+  const Vec3& apex = polygon.front();
+  for(std::size_t i = 1; i + 1 < polygon.size(); ++i)
+    if(!(dot(cross(difference(polygon[i], apex), difference(polygon[i + 1], apex)), normal) > 0))
+      return false;
+  return true;
+}
+
+template <class PolygonMesh, class VertexPointMap, class TangentPlanesMap, class ConstrainedMap,
+          class VertexIndexMap, class FaceIndexMap>
+class Quad_collapser
+{
+  using GT = boost::graph_traits<PolygonMesh>;
+  using vertex_descriptor = typename GT::vertex_descriptor;
+  using halfedge_descriptor = typename GT::halfedge_descriptor;
+  using face_descriptor = typename GT::face_descriptor;
+  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+
+  /// A quad worth collapsing, by how much its better diagonal lowers the energy.
+  struct Candidate
+  {
+    int energy_decrease;
+    std::size_t order; // tie-break, for determinism: position in the face sweep
+    face_descriptor quad;
+  };
+
+public:
+  /// `normals` holds unit normals by vertex index; merged vertices' are updated.
+  Quad_collapser(PolygonMesh& mesh, VertexPointMap vpm, TangentPlanesMap planes,
+                 ConstrainedMap constrained, VertexIndexMap vertex_index, FaceIndexMap face_index,
+                 std::vector<Vec3>& normals)
+    : mesh_(mesh), vpm_(vpm), planes_(planes), constrained_(constrained),
+      vertex_index_(vertex_index), normals_(normals), face_index_(face_index),
+      removed_faces_(index_bound(faces(mesh), face_index), false)
+  {}
+
+  Collapse_statistics run(int maximum_passes)
+  {
+    Collapse_statistics stats;
+    std::vector<Candidate> candidates;
+    for(int pass = 0; pass < maximum_passes; ++pass) {
+      ++stats.passes;
+      collect_candidates(candidates);
+      std::size_t collapsed = 0;
+      for(const Candidate& candidate : candidates) {
+        // earlier collapses of this pass may have removed or changed the quad
+        if(removed_faces_[get(face_index_, candidate.quad)] || degree(candidate.quad, mesh_) != 4)
+          continue;
+        const halfedge_descriptor h0 = better_diagonal(candidate.quad);
+        if(energy_decrease(h0) <= 0)
+          continue;
+        if(!keeps_manifold(h0)) {
+          ++stats.refused_topology;
+          continue;
+        }
+        const Vec3 position = merged_position(h0);
+        if(!keeps_faces_unfolded(h0, position)) {
+          ++stats.refused_fold_over;
+          continue;
+        }
+        collapse(h0, position);
+        ++collapsed;
+      }
+      stats.collapsed_quads += collapsed;
+      if(collapsed == 0)
+        break;
+    }
+    return stats;
+  }
+
+private:
+  std::size_t index(vertex_descriptor v) const { return get(vertex_index_, v); }
+  int valence(vertex_descriptor v) const { return int(degree(v, mesh_)); }
+  Vec3 position(vertex_descriptor v) const { return to_vec3(get(vpm_, v)); }
+
+  /// The quads with a collapse that lowers the valence energy, the better diagonal of
+  /// each, best first.
+  void collect_candidates(std::vector<Candidate>& candidates)
+  {
+    candidates.clear();
+    std::size_t order = 0;
+    for(face_descriptor f : faces(mesh_)) {
+      if(degree(f, mesh_) != 4)
+        continue;
+      const int decrease = energy_decrease(better_diagonal(f));
+      if(decrease > 0)
+        candidates.push_back({decrease, order++, f});
+    }
+    std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
+      return x.energy_decrease > y.energy_decrease ||
+             (x.energy_decrease == y.energy_decrease && x.order < y.order);
+    });
+  }
+
+  /// The halfedge h0 = a->b of the quad whose collapse (c into a) lowers the energy
+  /// most: one of the quad's first two halfedges (the two diagonals).
+  halfedge_descriptor better_diagonal(face_descriptor quad) const
+  {
+    const halfedge_descriptor h = halfedge(quad, mesh_);
+    return energy_decrease(h) >= energy_decrease(next(h, mesh_)) ? h : next(h, mesh_);
+  }
+
+  /// Decrease of sum (valence - 4)^2 over a, b, c, d when c is merged into a.
+  int energy_decrease(halfedge_descriptor h0) const
+  {
+    const halfedge_descriptor h1 = next(h0, mesh_), h2 = next(h1, mesh_);
+    const int a = valence(source(h0, mesh_)), b = valence(target(h0, mesh_)),
+              c = valence(target(h1, mesh_)), d = valence(target(h2, mesh_));
+    auto e = [](int valence) { return (valence - 4) * (valence - 4); };
+    return e(a) + e(b) + e(c) + e(d) - (e(a + c - 2) + e(b - 1) + e(d - 1));
+  }
+
+  /// Link condition for quads: the merged vertex has one disk of faces, no two edges
+  /// join the same vertices, no face visits a vertex twice, b and d keep valence 3.
+  bool keeps_manifold(halfedge_descriptor h0) const
+  {
+    const halfedge_descriptor h1 = next(h0, mesh_), h2 = next(h1, mesh_);
+    const vertex_descriptor a = source(h0, mesh_), b = target(h0, mesh_), c = target(h1, mesh_),
+                            d = target(h2, mesh_);
+    if(a == c || b == d || get(constrained_, a) || get(constrained_, c))
+      return false;
+    if(valence(b) < 4 || valence(d) < 4 || valence(a) < 3 || valence(c) < 3)
+      return false;
+    std::vector<vertex_descriptor> around_a;
+    for(vertex_descriptor w : CGAL::vertices_around_target(opposite(h0, mesh_), mesh_))
+      around_a.push_back(w);
+    for(vertex_descriptor w : CGAL::vertices_around_target(h1, mesh_))
+      if(w != b && w != d && std::find(around_a.begin(), around_a.end(), w) != around_a.end())
+        return false;
+    if(std::find(around_a.begin(), around_a.end(), c) != around_a.end())
+      return false;
+    const face_descriptor quad = face(h0, mesh_);
+    std::vector<face_descriptor> faces_a;
+    for(face_descriptor g : CGAL::faces_around_target(opposite(h0, mesh_), mesh_))
+      if(g != quad)
+        faces_a.push_back(g);
+    for(face_descriptor g : CGAL::faces_around_target(h1, mesh_))
+      if(g != quad && std::find(faces_a.begin(), faces_a.end(), g) != faces_a.end())
+        return false;
+    return true;
+  }
+
+  /// The paper's placement: the midpoint of a and c moved along their average normal
+  /// to the minimiser of the distances to the union of their tangent planes.
+  Vec3 merged_position(halfedge_descriptor h0) const
+  {
+    const vertex_descriptor a = source(h0, mesh_), c = target(next(h0, mesh_), mesh_);
+    const Vec3 pa = position(a), pc = position(c);
+    const Vec3 mid = {{(pa[0] + pc[0]) / 2, (pa[1] + pc[1]) / 2, (pa[2] + pc[2]) / 2}};
+    const Vec3 n = merged_normal(a, c);
+    return n == Vec3{{0, 0, 0}} ? mid : project(mid, n, a, c);
+  }
+
+  Vec3 merged_normal(vertex_descriptor a, vertex_descriptor c) const
+  {
+    const Vec3& na = normals_[index(a)];
+    const Vec3& nc = normals_[index(c)];
+    return normalized(Vec3{{na[0] + nc[0], na[1] + nc[1], na[2] + nc[2]}});
+  }
+
+  /// lambda of the paper's line-restricted quadric, over the planes of a and c together.
+  Vec3 project(const Vec3& x, const Vec3& n, vertex_descriptor a, vertex_descriptor c) const
+  {
+    double numerator = 0, denominator = epsilon_;
+    for(vertex_descriptor v : {a, c})
+      for(const auto& plane : get(planes_, v)) {
+        const double cosine = dot(n, plane.second);
+        numerator += dot(difference(plane.first, x), plane.second) * cosine;
+        denominator += cosine * cosine;
+      }
+    const double lambda = numerator / denominator;
+    return {{x[0] + lambda * n[0], x[1] + lambda * n[1], x[2] + lambda * n[2]}};
+  }
+
+  /// Whether every face around a and c (but the quad) stays unfolded once a and c are
+  /// one vertex at `merged`: its normal keeps its direction, a convex face stays
+  /// convex, and every triangle of the fan from the merged vertex turns like the face.
+  bool keeps_faces_unfolded(halfedge_descriptor h0, const Vec3& merged) const
+  {
+    const face_descriptor quad = face(h0, mesh_);
+    for(halfedge_descriptor around : {opposite(h0, mesh_), next(h0, mesh_)}) // targets a, c
+      for(halfedge_descriptor h : CGAL::halfedges_around_target(around, mesh_)) {
+        if(is_border(h, mesh_) || face(h, mesh_) == quad)
+          continue;
+        corners_.clear();
+        halfedge_descriptor g = h; // corners from the merged vertex on
+        do {
+          corners_.push_back(position(target(g, mesh_)));
+          g = next(g, mesh_);
+        } while(g != h);
+        const Vec3 normal_before = newell_normal(corners_);
+        const bool was_convex = is_convex(corners_, normal_before);
+        corners_.front() = merged;
+        const Vec3 normal_after = newell_normal(corners_);
+        if(!(dot(normal_after, normal_before) > 0))
+          return false;
+        if(was_convex ? !is_convex(corners_, normal_after) : !fan_turns_with(corners_, normal_after))
+          return false;
+      }
+    return true;
+  }
+
+  void collapse(halfedge_descriptor h0, const Vec3& merged)
+  {
+    const halfedge_descriptor h1 = next(h0, mesh_), h2 = next(h1, mesh_), h3 = next(h2, mesh_);
+    const halfedge_descriptor o1 = opposite(h1, mesh_), o2 = opposite(h2, mesh_);
+    const vertex_descriptor a = source(h0, mesh_), b = target(h0, mesh_), c = target(h1, mesh_),
+                            d = target(h2, mesh_);
+    const Vec3 normal = merged_normal(a, c);
+
+    std::vector<halfedge_descriptor> into_c;
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(h1, mesh_))
+      if(h != h1 && h != o2)
+        into_c.push_back(h);
+    for(halfedge_descriptor h : into_c)
+      set_target(h, a, mesh_);
+
+    replace_in_face(o1, h0);
+    replace_in_face(o2, h3);
+    set_halfedge(a, opposite(h0, mesh_), mesh_);
+    set_halfedge(b, h0, mesh_);
+    set_halfedge(d, opposite(h3, mesh_), mesh_);
+
+    auto merged_planes = get(planes_, a);
+    const auto& planes_c = get(planes_, c);
+    merged_planes.insert(merged_planes.end(), planes_c.begin(), planes_c.end());
+    put(planes_, a, merged_planes);
+    put(vpm_, a, Point(merged[0], merged[1], merged[2]));
+    normals_[index(a)] = normal;
+
+    const face_descriptor quad = face(h1, mesh_);
+    removed_faces_[get(face_index_, quad)] = true;
+    remove_face(quad, mesh_);
+    remove_edge(edge(h1, mesh_), mesh_);
+    remove_edge(edge(h2, mesh_), mesh_);
+    remove_vertex(c, mesh_);
+  }
+
+  /// `replacement` takes the place of `h` in h's face.
+  void replace_in_face(halfedge_descriptor h, halfedge_descriptor replacement)
+  {
+    const face_descriptor f = face(h, mesh_);
+    set_next(prev(h, mesh_), replacement, mesh_);
+    set_next(replacement, next(h, mesh_), mesh_);
+    set_face(replacement, f, mesh_);
+    if(halfedge(f, mesh_) == h)
+      set_halfedge(f, replacement, mesh_);
+  }
+
+  static constexpr double epsilon_ = 1e-3; // as in the relaxation: never singular
+
+  PolygonMesh& mesh_;
+  VertexPointMap vpm_;
+  TangentPlanesMap planes_;
+  ConstrainedMap constrained_;
+  VertexIndexMap vertex_index_;
+  std::vector<Vec3>& normals_;
+  FaceIndexMap face_index_;
+  std::vector<bool> removed_faces_; // by face index: faces are never created
+  mutable std::vector<Vec3> corners_;
+};
+
+} // namespace internal
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUAD_COLLAPSER_H

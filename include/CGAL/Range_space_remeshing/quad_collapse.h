@@ -1,0 +1,136 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_QUAD_COLLAPSE_H
+#define CGAL_RANGE_SPACE_REMESHING_QUAD_COLLAPSE_H
+
+#include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/parameters.h>
+#include <CGAL/Range_space_remeshing/internal/Quadric.h>
+#include <CGAL/Range_space_remeshing/internal/Quad_collapser.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <chrono>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
+collapses quads of `mesh` along a diagonal where that makes the vertex valences more
+regular (section 6 of the paper). Collapsing the quad (a, b, c, d) along (a, c)
+merges a and c into one vertex and removes the quad; the edges a-b and b-c become one,
+and so do c-d and d-a, so an all-quad mesh stays all quads. A collapse is done when it
+lowers the valence energy \f$\sum (\mathrm{valence} - 4)^2\f$ of the vertices
+involved, and only if the result stays a valid manifold mesh:
+- a and c share no neighbour but b and d and no face but the quad (link condition:
+  no parallel edge, no face visiting a vertex twice, no non-manifold vertex);
+- b and d keep a valence of at least 3 (no doublet);
+- no face around the merged vertex folds over: each triangle of its fan from the merged
+  vertex keeps a positive orientation with respect to the face's normal before the collapse;
+- a and c are not constrained (`vertex_is_constrained_map`).
+
+The merged vertex takes the union of the two vertices' tangent planes (their quadric
+error), and is placed as in the relaxation: on the line through the midpoint along
+the average normal, at the minimiser of the squared distances to the merged tangent
+planes. Collapses are tried in passes, in decreasing order of energy decrease, until a
+pass collapses nothing or `number_of_iterations` passes have run.
+
+\tparam PolygonMesh a model of `MutableFaceGraph` (e.g. `Surface_mesh`, `Polyhedron_3`).
+\param mesh a closed polygon mesh, valid, whose faces are simple polygons. A
+  `Surface_mesh` is garbage-collected at the end, so that its indices stay contiguous.
+\param np optional named parameters:
+  - `vertex_point_map` (read-write; default: the mesh's point map);
+  - `geom_traits` (the 3-D kernel; default: the kernel of the point type);
+  - `vertex_normal_map` (read-write, unit normals; default: the average normal of each
+    vertex's tangent planes if `vertex_tangent_planes_map` is given, else computed
+    from the mesh);
+  - `vertex_tangent_planes_map` (read-write, vertex -> `Tangent_planes`, e.g. from
+    `dualize()`; default: one plane per vertex, its position and normal);
+  - `vertex_is_constrained_map` (vertex -> bool, default: none constrained);
+  - `number_of_iterations` (the maximum number of passes, default 10).
+\throws Remeshing_error if the mesh is empty or has a border.
+*/
+template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+Collapse_statistics collapse_quads(PolygonMesh& mesh,
+                                   const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  using GeomTraits = typename GetGeomTraits<PolygonMesh, NamedParameters>::type;
+  using Vector = typename GeomTraits::Vector_3;
+
+  const auto start = std::chrono::steady_clock::now();
+  if(num_faces(mesh) == 0)
+    throw Remeshing_error("collapse_quads: the mesh has no face");
+  for(auto h : halfedges(mesh))
+    if(is_border(h, mesh))
+      throw Remeshing_error("collapse_quads: the mesh has a border (not supported yet)");
+
+  using VPM = typename GetVertexPointMap<PolygonMesh, NamedParameters>::type;
+  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                             get_property_map(CGAL::vertex_point, mesh));
+  const int passes = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10);
+  auto constrained = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
+                                      CGAL::Constant_property_map<vertex_descriptor, bool>(false));
+  auto vertex_index = CGAL::get_initialized_vertex_index_map(mesh, np);
+  const std::size_t index_bound = internal::index_bound(vertices(mesh), vertex_index);
+
+  constexpr bool has_planes = !is_default_parameter<NamedParameters, internal_np::vertex_tangent_planes_map_t>::value;
+  constexpr bool has_normals = !is_default_parameter<NamedParameters, CGAL::internal_np::vertex_normal_map_t>::value;
+  auto normal_map = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_normal_map),
+                                     CGAL::Constant_property_map<vertex_descriptor, Vector>());
+
+  // Unit normals, by vertex index: what the projection of merged vertices uses.
+  std::vector<internal::Vec3> normals(index_bound);
+  std::vector<Tangent_planes> own_planes(has_planes ? 0 : index_bound);
+  auto planes = choose_parameter(get_parameter(np, internal_np::vertex_tangent_planes_map),
+                                 boost::make_iterator_property_map(own_planes.begin(), vertex_index));
+  for(vertex_descriptor v : vertices(mesh)) {
+    internal::Vec3 n = {{0, 0, 0}};
+    if constexpr(has_normals)
+      n = internal::to_vec3(get(normal_map, v));
+    else if constexpr(has_planes)
+      n = internal::average_normal(get(planes, v));
+    else
+      n = internal::to_vec3(CGAL::Polygon_mesh_processing::compute_vertex_normal(
+          v, mesh, CGAL::parameters::vertex_point_map(vpm).geom_traits(GeomTraits())));
+    normals[get(vertex_index, v)] = internal::normalized(n);
+    if constexpr(!has_planes)
+      own_planes[get(vertex_index, v)].emplace_back(internal::to_vec3(get(vpm, v)),
+                                                    normals[get(vertex_index, v)]);
+  }
+
+  auto face_index = CGAL::get_initialized_face_index_map(mesh, np);
+  internal::Quad_collapser<PolygonMesh, VPM, decltype(planes), decltype(constrained),
+                           decltype(vertex_index), decltype(face_index)>
+      collapser(mesh, vpm, planes, constrained, vertex_index, face_index, normals);
+  Collapse_statistics stats = collapser.run(passes);
+
+  if constexpr(has_normals) // before the garbage collection: indices still match
+    for(vertex_descriptor v : vertices(mesh)) {
+      const internal::Vec3& n = normals[get(vertex_index, v)];
+      put(normal_map, v, Vector(n[0], n[1], n[2]));
+    }
+  internal::collect_garbage_if_any(mesh);
+  stats.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return stats;
+}
+
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_QUAD_COLLAPSE_H
