@@ -58,6 +58,9 @@ const char* usage =
     "                        polygons, every vertex of valence 4\n"
     "  --placement NAME      where dual vertices go: qem (the default: closest to the\n"
     "                        tangent planes of the piece's vertices) or average\n"
+    "  --collapse            collapse dual quads where that makes valences more\n"
+    "                        regular (the default)\n"
+    "  --no-collapse         keep the dual as it is\n"
     "  --relax K             K relaxation iterations of the dual (default 3, 0: none)\n"
     "  --seeded              seeded traversal from one face per component: maps only\n"
     "                        the triangles the arcs cross (sublinear), may miss pieces\n"
@@ -105,7 +108,7 @@ struct Options
   std::string input, output, map = "identity", output_kind = "dual", placement = "qem";
   double cell_size = 0.01;
   int relax = 3;
-  bool absolute = false, seeded = false, stats = false;
+  bool absolute = false, seeded = false, stats = false, collapse = true;
   long target_vertices = 0;
 };
 
@@ -160,6 +163,8 @@ Options parse_arguments(int argc, char** argv)
       if(!(k >= 0) || k != std::floor(k) || k > 1000)
         fail("--relax expects an integer between 0 and 1000");
       options.relax = int(k);
+    } else if(arg == "--collapse" || arg == "--no-collapse") {
+      options.collapse = arg == "--collapse";
     } else if(arg == "--seeded") {
       options.seeded = true;
     } else if(arg == "--stats") {
@@ -289,11 +294,11 @@ RSR::Remesh_statistics remesh(const Mesh& input, double h, const Options& option
   }
   const auto placement =
       options.placement == "average" ? RSR::Dual_placement::AVERAGE : RSR::Dual_placement::QEM;
+  const auto np = CGAL::parameters::grid_spacing(h).seeding_method(seeding).number_of_relaxation_steps(
+      options.relax);
   return RSR::remesh(input, output,
-                     RSR::parameters::dual_placement(placement,
-                                                     CGAL::parameters::grid_spacing(h)
-                                                         .seeding_method(seeding)
-                                                         .number_of_relaxation_steps(options.relax)));
+                     RSR::parameters::quad_collapse(options.collapse,
+                                                    RSR::parameters::dual_placement(placement, np)));
 }
 
 /// Chooses the cell size so that the output has about `target` vertices: the count
@@ -339,7 +344,8 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
        << ", \"map\": \"" << options.map << "\", \"D\": 3"
        << ", \"cell_size\": " << h << ", \"seeding\": \"" << (options.seeded ? "seeded" : "complete")
        << "\", \"output_kind\": \"" << options.output_kind << "\", \"placement\": \""
-       << options.placement << "\", \"relaxation_steps\": " << options.relax
+       << options.placement << "\", \"collapse\": " << (options.collapse ? "true" : "false")
+       << ", \"relaxation_steps\": " << options.relax
        << ", \"triangulated\": " << (triangulated ? "true" : "false")
        << ", \"input_vertices\": " << num_vertices(input) << ", \"input_faces\": " << num_faces(input)
        << ", \"input_components\": " << components(input)
@@ -353,6 +359,7 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
        << ", \"quads\": " << quads << ", \"non_quads\": " << num_faces(output) - quads
        << ", \"joined_triangle_pairs\": " << all.dual.joined_triangle_pairs
        << ", \"dual_dropped_pieces\": " << all.dual.dropped_pieces
+       << ", \"collapsed_quads\": " << all.collapse.collapsed_quads
        << ", \"valence_histogram\": {";
   bool first = true;
   for(const auto& [valence, count] : valences) {
@@ -361,7 +368,8 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
   }
   json << "}, \"time_ms\": {\"seeding\": " << s.time_seeding_ms << ", \"tracing\": " << s.time_tracing_ms
        << ", \"faces\": " << s.time_faces_ms << ", \"output\": " << s.time_output_ms
-       << ", \"dual\": " << all.dual.time_ms << ", \"relaxation\": " << all.time_relaxation_ms
+       << ", \"dual\": " << all.dual.time_ms << ", \"collapse\": " << all.collapse.time_ms
+       << ", \"relaxation\": " << all.time_relaxation_ms
        << ", \"total\": " << all.time_total_ms << "}}";
   std::cout << json.str() << std::endl;
 }

@@ -79,6 +79,26 @@ if(NOT relaxation_ms EQUAL 0)
   math(EXPR failures "${failures} + 1")
 endif()
 
+# the collapse makes valences more regular; --no-collapse leaves the dual as it is
+run(0 n.off --stats --no-collapse --cell-size 0.01 ${elephant} n.off)
+string(JSON plain_collapsed GET "${out}" collapsed_quads)
+string(JSON plain_valence_4 GET "${out}" valence_histogram 4)
+string(JSON plain_vertices GET "${out}" output_vertices)
+run(0 m.off --stats --collapse --cell-size 0.01 ${elephant} m.off)
+string(JSON collapsed GET "${out}" collapsed_quads)
+string(JSON collapsed_valence_4 GET "${out}" valence_histogram 4)
+string(JSON collapsed_vertices GET "${out}" output_vertices)
+string(JSON collapse_non_quads GET "${out}" non_quads)
+math(EXPR plain_permille "1000 * ${plain_valence_4} / ${plain_vertices}")
+math(EXPR collapsed_permille "1000 * ${collapsed_valence_4} / ${collapsed_vertices}")
+math(EXPR expected_vertices "${plain_vertices} - ${collapsed}")
+if(NOT plain_collapsed EQUAL 0 OR NOT collapsed GREATER 0 OR NOT collapse_non_quads EQUAL 0
+   OR NOT collapsed_vertices EQUAL expected_vertices OR NOT collapsed_permille GREATER plain_permille)
+  message(SEND_ERROR "--collapse / --no-collapse: ${plain_collapsed} and ${collapsed} collapses, "
+                     "valence 4 ${plain_permille} -> ${collapsed_permille} permille: ${out}")
+  math(EXPR failures "${failures} + 1")
+endif()
+
 # determinism: same input and options, same bytes
 run(0 b.off --cell-size 0.01 ${elephant} b.off)
 file(SHA256 ${WORK_DIR}/a.off hash_a)

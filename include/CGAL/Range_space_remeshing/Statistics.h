@@ -80,7 +80,8 @@ struct Collapse_statistics
 {
   /// quads collapsed along a diagonal (each removes one face and one vertex)
   std::size_t collapsed_quads = 0;
-  /// passes over the candidates, the last of which collapsed nothing (or hit the limit)
+  /// passes: the first over all quads, each next one over the quads around the vertices
+  /// that the previous pass changed, until none is left or the limit is hit
   std::size_t passes = 0;
   /// collapses that would lower the valence energy but were refused because the result
   /// would not be a valid manifold (link condition, doublet), summed over the passes

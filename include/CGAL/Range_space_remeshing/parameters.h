@@ -51,6 +51,7 @@ enum grid_origin_t { grid_origin };
 enum seed_faces_t { seed_faces };
 enum dual_placement_t { dual_placement };
 enum vertex_tangent_planes_map_t { vertex_tangent_planes_map };
+enum quad_collapse_t { quad_collapse };
 } // namespace internal_np
 
 namespace parameters {
@@ -82,6 +83,9 @@ CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(dual_placement)
 /// A read-write property map, dual vertex -> `Tangent_planes`: the tangent planes
 /// of the primal face, written by `dualize()` and read by `relax_on_tangent_planes()`.
 CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(vertex_tangent_planes_map)
+/// Whether `remesh()` runs `collapse_quads()` between the dual and the relaxation
+/// (`bool`). Default: `true`.
+CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(quad_collapse)
 
 #undef CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER
 

@@ -6,7 +6,8 @@
 #ifndef CGAL_RANGE_SPACE_REMESHING_RELAX_ON_TANGENT_PLANES_H
 #define CGAL_RANGE_SPACE_REMESHING_RELAX_ON_TANGENT_PLANES_H
 
-#include <CGAL/Range_space_remeshing/dualize.h>
+#include <CGAL/Range_space_remeshing/Tangent_planes.h>
+#include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
 #include <CGAL/Kernel_traits.h>
@@ -62,19 +63,15 @@ double relax_on_tangent_planes(PolygonMesh& mesh, TangentPlanesMap tangent_plane
                                      CGAL::Constant_property_map<vertex_descriptor, Vector>());
   auto vertex_index = CGAL::get_initialized_vertex_index_map(mesh, np);
 
-  const std::size_t n = num_vertices(mesh);
+  const std::size_t n = internal::index_bound(vertices(mesh), vertex_index);
   std::vector<Vec3> position(n), normal(n), next_position(n), next_normal(n);
   for(vertex_descriptor v : vertices(mesh)) {
     const std::size_t i = get(vertex_index, v);
     position[i] = internal::to_vec3(get(vpm, v));
-    Vec3 average = {{0, 0, 0}};
     if constexpr(has_normals)
-      average = internal::to_vec3(get(normal_map, v));
+      normal[i] = internal::normalized(internal::to_vec3(get(normal_map, v)));
     else
-      for(const auto& plane : get(tangent_planes, v))
-        for(int d = 0; d < 3; ++d)
-          average[d] += plane.second[d];
-    normal[i] = internal::normalized(average);
+      normal[i] = internal::normalized(internal::average_normal(get(tangent_planes, v)));
   }
 
   constexpr double epsilon = 1e-3; // the weak extra plane at (v', n'): never singular

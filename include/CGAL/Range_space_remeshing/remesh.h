@@ -8,6 +8,7 @@
 
 #include <CGAL/Range_space_remeshing/dualize.h>
 #include <CGAL/Range_space_remeshing/primal_remesh.h>
+#include <CGAL/Range_space_remeshing/quad_collapse.h>
 #include <CGAL/Range_space_remeshing/relax_on_tangent_planes.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -27,6 +28,7 @@ struct Remesh_statistics
 {
   Statistics primal;
   Dual_statistics dual;
+  Collapse_statistics collapse;
   double time_relaxation_ms = 0;
   double time_total_ms = 0;
 };
@@ -35,12 +37,13 @@ struct Remesh_statistics
 \ingroup PkgRangeSpaceRemeshingRef
 
 The whole pipeline: `primal_remesh()` of `tm`, `dualize()` of the result into
-`quads`, then `relax_on_tangent_planes()`.
+`quads`, `collapse_quads()`, then `relax_on_tangent_planes()`.
 
 \param np the named parameters of `primal_remesh()` (`range_map`, `grid_spacing`,
   `grid_origin`, `seeding_method`, `seed_faces`, `maximum_number`,
   `vertex_point_map`, `geom_traits`), plus `dual_placement` (default
-  `Dual_placement::QEM`) and `number_of_relaxation_steps` (default 3).
+  `Dual_placement::QEM`), `quad_collapse` (default `true`) and
+  `number_of_relaxation_steps` (default 3).
 \param np_out `vertex_point_map` of `quads`.
 */
 template <class TriangleMesh, class QuadMesh,
@@ -75,6 +78,11 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
                                                   CGAL::parameters::vertex_normal_map(primal_normals)),
                        parameters::vertex_tangent_planes_map(
                            planes, CGAL::parameters::vertex_normal_map(normals).vertex_point_map(out_vpm)));
+
+  if(choose_parameter(get_parameter(np, internal_np::quad_collapse), true))
+    stats.collapse = collapse_quads(
+        quads, parameters::vertex_tangent_planes_map(
+                   planes, CGAL::parameters::vertex_normal_map(normals).vertex_point_map(out_vpm)));
 
   const int steps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 3);
   if(steps > 0)

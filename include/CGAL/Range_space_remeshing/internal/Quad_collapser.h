@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -92,16 +93,27 @@ public:
                  std::vector<Vec3>& normals)
     : mesh_(mesh), vpm_(vpm), planes_(planes), constrained_(constrained),
       vertex_index_(vertex_index), normals_(normals), face_index_(face_index),
-      removed_faces_(index_bound(faces(mesh), face_index), false)
-  {}
+      removed_faces_(index_bound(faces(mesh), face_index), false),
+      touched_in_pass_(removed_faces_.size(), 0), valences_(index_bound(vertices(mesh), vertex_index))
+  {
+    for(vertex_descriptor v : vertices(mesh_))
+      valences_[index(v)] = int(degree(v, mesh_));
+  }
 
+  /// Passes over the quads: the first over all of them, each next one over the quads
+  /// whose vertex valences the previous pass changed (the others' energies are as
+  /// they were).
   Collapse_statistics run(int maximum_passes)
   {
     Collapse_statistics stats;
     std::vector<Candidate> candidates;
-    for(int pass = 0; pass < maximum_passes; ++pass) {
+    std::vector<face_descriptor> to_examine(faces(mesh_).begin(), faces(mesh_).end());
+    for(int pass = 1; pass <= maximum_passes && !to_examine.empty(); ++pass) {
       ++stats.passes;
-      collect_candidates(candidates);
+      collect_candidates(to_examine, candidates);
+      to_examine.clear();
+      pass_ = pass;
+      touched_ = &to_examine;
       std::size_t collapsed = 0;
       for(const Candidate& candidate : candidates) {
         // earlier collapses of this pass may have removed or changed the quad
@@ -123,25 +135,26 @@ public:
         ++collapsed;
       }
       stats.collapsed_quads += collapsed;
-      if(collapsed == 0)
-        break;
+      std::sort(to_examine.begin(), to_examine.end(), [&](face_descriptor f, face_descriptor g) {
+        return get(face_index_, f) < get(face_index_, g);
+      });
     }
+    remove_unlinked_elements();
     return stats;
   }
 
 private:
   std::size_t index(vertex_descriptor v) const { return get(vertex_index_, v); }
-  int valence(vertex_descriptor v) const { return int(degree(v, mesh_)); }
+  int valence(vertex_descriptor v) const { return valences_[index(v)]; }
   Vec3 position(vertex_descriptor v) const { return to_vec3(get(vpm_, v)); }
 
-  /// The quads with a collapse that lowers the valence energy, the better diagonal of
-  /// each, best first.
-  void collect_candidates(std::vector<Candidate>& candidates)
+  /// The quads of `quads` with a collapse that lowers the valence energy, best first.
+  void collect_candidates(const std::vector<face_descriptor>& quads, std::vector<Candidate>& candidates)
   {
     candidates.clear();
     std::size_t order = 0;
-    for(face_descriptor f : faces(mesh_)) {
-      if(degree(f, mesh_) != 4)
+    for(face_descriptor f : quads) {
+      if(removed_faces_[get(face_index_, f)] || degree(f, mesh_) != 4)
         continue;
       const int decrease = energy_decrease(better_diagonal(f));
       if(decrease > 0)
@@ -159,6 +172,18 @@ private:
   {
     const halfedge_descriptor h = halfedge(quad, mesh_);
     return energy_decrease(h) >= energy_decrease(next(h, mesh_)) ? h : next(h, mesh_);
+  }
+
+  /// Queues the faces around v for the next pass (once each).
+  void touch_faces_around(vertex_descriptor v)
+  {
+    for(face_descriptor g : CGAL::faces_around_target(halfedge(v, mesh_), mesh_)) {
+      std::size_t& stamp = touched_in_pass_[get(face_index_, g)];
+      if(stamp != pass_) {
+        stamp = pass_;
+        touched_->push_back(g);
+      }
+    }
   }
 
   /// Decrease of sum (valence - 4)^2 over a, b, c, d when c is merged into a.
@@ -182,7 +207,8 @@ private:
       return false;
     if(valence(b) < 4 || valence(d) < 4 || valence(a) < 3 || valence(c) < 3)
       return false;
-    std::vector<vertex_descriptor> around_a;
+    auto& around_a = around_a_;
+    around_a.clear();
     for(vertex_descriptor w : CGAL::vertices_around_target(opposite(h0, mesh_), mesh_))
       around_a.push_back(w);
     for(vertex_descriptor w : CGAL::vertices_around_target(h1, mesh_))
@@ -191,7 +217,8 @@ private:
     if(std::find(around_a.begin(), around_a.end(), c) != around_a.end())
       return false;
     const face_descriptor quad = face(h0, mesh_);
-    std::vector<face_descriptor> faces_a;
+    auto& faces_a = faces_a_;
+    faces_a.clear();
     for(face_descriptor g : CGAL::faces_around_target(opposite(h0, mesh_), mesh_))
       if(g != quad)
         faces_a.push_back(g);
@@ -269,12 +296,16 @@ private:
                             d = target(h2, mesh_);
     const Vec3 normal = merged_normal(a, c);
 
-    std::vector<halfedge_descriptor> into_c;
+    std::vector<halfedge_descriptor>& into_c = into_c_;
+    into_c.clear();
     for(halfedge_descriptor h : CGAL::halfedges_around_target(h1, mesh_))
       if(h != h1 && h != o2)
         into_c.push_back(h);
     for(halfedge_descriptor h : into_c)
       set_target(h, a, mesh_);
+    valences_[index(a)] += valences_[index(c)] - 2;
+    --valences_[index(b)];
+    --valences_[index(d)];
 
     replace_in_face(o1, h0);
     replace_in_face(o2, h3);
@@ -282,19 +313,46 @@ private:
     set_halfedge(b, h0, mesh_);
     set_halfedge(d, opposite(h3, mesh_), mesh_);
 
-    auto merged_planes = get(planes_, a);
-    const auto& planes_c = get(planes_, c);
-    merged_planes.insert(merged_planes.end(), planes_c.begin(), planes_c.end());
-    put(planes_, a, merged_planes);
+    append_planes(a, c);
     put(vpm_, a, Point(merged[0], merged[1], merged[2]));
     normals_[index(a)] = normal;
 
     const face_descriptor quad = face(h1, mesh_);
     removed_faces_[get(face_index_, quad)] = true;
-    remove_face(quad, mesh_);
-    remove_edge(edge(h1, mesh_), mesh_);
-    remove_edge(edge(h2, mesh_), mesh_);
-    remove_vertex(c, mesh_);
+    unlinked_.push_back({quad, h1, h2, c});
+    for(vertex_descriptor v : {a, b, d})
+      touch_faces_around(v);
+  }
+
+  /// Removes the elements of the collapsed quads. Deferred to the end of the run: a
+  /// `Polyhedron_3` frees removed faces, and the pass lists may still name them.
+  void remove_unlinked_elements()
+  {
+    for(const Unlinked& u : unlinked_) {
+      remove_face(u.quad, mesh_);
+      remove_edge(edge(u.h1, mesh_), mesh_);
+      remove_edge(edge(u.h2, mesh_), mesh_);
+      remove_vertex(u.c, mesh_);
+    }
+    unlinked_.clear();
+  }
+
+  /// The tangent planes of `to` become those of both: in place where the map gives
+  /// references (no copy of the list), through get and put otherwise.
+  void append_planes(vertex_descriptor to, vertex_descriptor from)
+  {
+    using Reference = typename boost::property_traits<TangentPlanesMap>::reference;
+    if constexpr(std::is_lvalue_reference<Reference>::value &&
+                 !std::is_const<std::remove_reference_t<Reference>>::value) {
+      auto& merged = get(planes_, to);
+      const auto& added = get(planes_, from);
+      merged.insert(merged.end(), added.begin(), added.end());
+    } else {
+      auto merged = get(planes_, to);
+      const auto added = get(planes_, from);
+      merged.insert(merged.end(), added.begin(), added.end());
+      put(planes_, to, merged);
+    }
   }
 
   /// `replacement` takes the place of `h` in h's face.
@@ -318,6 +376,20 @@ private:
   std::vector<Vec3>& normals_;
   FaceIndexMap face_index_;
   std::vector<bool> removed_faces_; // by face index: faces are never created
+  std::vector<std::size_t> touched_in_pass_; // by face index: last pass that queued it
+  std::vector<int> valences_;                // by vertex index
+  std::size_t pass_ = 0;
+  std::vector<face_descriptor>* touched_ = nullptr; // the next pass's faces
+  mutable std::vector<vertex_descriptor> around_a_;
+  mutable std::vector<face_descriptor> faces_a_;
+  std::vector<halfedge_descriptor> into_c_;
+  struct Unlinked // what a collapse took out of the mesh's connectivity
+  {
+    face_descriptor quad;
+    halfedge_descriptor h1, h2;
+    vertex_descriptor c;
+  };
+  std::vector<Unlinked> unlinked_;
   mutable std::vector<Vec3> corners_;
 };
 
