@@ -48,8 +48,9 @@ inline std::pair<Vec3, Vec3> place_dual_vertex(const Tangent_planes& planes, Dua
     }
     quadric.add_plane(plane.first, plane.second);
   }
-  const Vec3 position = placement == Dual_placement::QEM ? quadric.minimiser(mass) : mass;
-  return {position, normalized(normal)};
+  const Vec3 unit_normal = normalized(normal);
+  const Vec3 position = placement == Dual_placement::QEM ? quadric.minimiser(mass, 0.1, &unit_normal) : mass;
+  return {position, unit_normal};
 }
 
 /// Number of edges that join the same two vertices as another edge.

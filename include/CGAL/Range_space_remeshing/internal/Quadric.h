@@ -56,12 +56,42 @@ inline Vec3 cross(const Vec3& a, const Vec3& b)
   return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
 }
 
+/// A unit vector orthogonal to the unit vector n.
+inline Vec3 any_orthogonal(const Vec3& n)
+{
+  // cross n with the axis it is least aligned with: never nearly parallel
+  const int axis = std::abs(n[0]) <= std::abs(n[1]) ? (std::abs(n[0]) <= std::abs(n[2]) ? 0 : 2)
+                                                    : (std::abs(n[1]) <= std::abs(n[2]) ? 1 : 2);
+  Vec3 e = {{0, 0, 0}};
+  e[axis] = 1;
+  return normalized(cross(n, e));
+}
+
 /// Eigen-decomposition of a symmetric 3x3 matrix by cyclic Jacobi rotations:
 /// a = sum_k values[k] vectors[k] vectors[k]^T, vectors orthonormal.
+/// `guess`, if not null, is a unit vector close to an eigenvector (e.g. the average
+/// normal of a quadric's planes): starting from a basis that contains it, the rotations
+/// have little left to do and converge in a sweep or two instead of four or five.
 inline void symmetric_eigen_3(std::array<std::array<double, 3>, 3> a, Vec3& values,
-                              std::array<Vec3, 3>& vectors)
+                              std::array<Vec3, 3>& vectors, const Vec3* guess = nullptr)
 {
   std::array<std::array<double, 3>, 3> v = {{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+  if(guess != nullptr && dot(*guess, *guess) > 0.5) {
+    const Vec3 t1 = any_orthogonal(*guess), t2 = cross(*guess, t1);
+    const std::array<Vec3, 3> basis = {{*guess, t1, t2}};
+    std::array<std::array<double, 3>, 3> rotated; // basis^T a basis
+    for(int r = 0; r < 3; ++r)
+      for(int c = 0; c < 3; ++c) {
+        double sum = 0;
+        for(int i = 0; i < 3; ++i)
+          sum += basis[r][i] * dot(a[i], basis[c]);
+        rotated[r][c] = sum;
+      }
+    a = rotated;
+    for(int i = 0; i < 3; ++i)
+      for(int k = 0; k < 3; ++k)
+        v[i][k] = basis[k][i]; // columns of v: the basis vectors
+  }
   for(int sweep = 0; sweep < 50; ++sweep) {
     const double off = a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2];
     const double diagonal = a[0][0] * a[0][0] + a[1][1] * a[1][1] + a[2][2] * a[2][2];
@@ -120,13 +150,14 @@ public:
   /// Minimiser of the quadric, regularised towards `mass_point`: directions whose
   /// eigenvalue is below `truncation` times the largest are left at the mass point
   /// (a flat region has one constrained direction, a crease two, a corner three).
-  Vec3 minimiser(const Vec3& mass_point, double truncation = 0.1) const
+  /// `normal_guess` (unit, or null) speeds the eigen-decomposition up; see `symmetric_eigen_3`.
+  Vec3 minimiser(const Vec3& mass_point, double truncation = 0.1, const Vec3* normal_guess = nullptr) const
   {
     if(planes_ == 0)
       return mass_point;
     Vec3 values;
     std::array<Vec3, 3> vectors;
-    symmetric_eigen_3(a_, values, vectors);
+    symmetric_eigen_3(a_, values, vectors, normal_guess);
     const double largest = std::max({std::abs(values[0]), std::abs(values[1]), std::abs(values[2])});
     // residual at the mass point: b - A c
     Vec3 r = b_;
