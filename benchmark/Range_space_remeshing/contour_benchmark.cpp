@@ -158,15 +158,16 @@ void measure_dual(const std::string& name, const Mesh& input, double h, int runs
     dual_valence_4 = valence_4_percent(q);
     collapse_stats = RSR::collapse_quads(
         q, RSR::parameters::vertex_tangent_planes_map(planes, CGAL::parameters::vertex_normal_map(qn)));
-    const double relax = RSR::relax_on_tangent_planes(q, planes,
-        CGAL::parameters::number_of_iterations(1).vertex_normal_map(qn));
+    const double relax = RSR::relax_on_tangent_planes(q, RSR::parameters::vertex_tangent_planes_map(
+        planes, CGAL::parameters::number_of_iterations(1).vertex_normal_map(qn)));
     if(r > 0) { // the first run is the warm-up
       dual_ms.push_back(dual_stats.time_ms);
       collapse_ms.push_back(collapse_stats.time_ms);
       relax_ms.push_back(relax);
     }
     if(r == runs) {
-      RSR::relax_on_tangent_planes(q, planes, CGAL::parameters::number_of_iterations(2).vertex_normal_map(qn));
+      RSR::relax_on_tangent_planes(q, RSR::parameters::vertex_tangent_planes_map(
+          planes, CGAL::parameters::number_of_iterations(2).vertex_normal_map(qn)));
       quads = q; // 3 iterations in all
     }
   }

@@ -139,7 +139,8 @@ void check_input(const std::string& name, const Mesh& input, double relative_cel
   Mesh relaxed = collapsed;
   auto planes = relaxed.property_map<Mesh::Vertex_index, RSR::Tangent_planes>("v:planes").first;
   auto dual_normals = relaxed.property_map<Mesh::Vertex_index, Vector>("v:normal").first;
-  RSR::relax_on_tangent_planes(relaxed, planes, params::number_of_iterations(3).vertex_normal_map(dual_normals));
+  RSR::relax_on_tangent_planes(relaxed, RSR::parameters::vertex_tangent_planes_map(
+                                            planes, params::number_of_iterations(3).vertex_normal_map(dual_normals)));
   CHECK(CGAL::is_valid_polygon_mesh(relaxed));
   const double volume_before = signed_volume(collapsed);
   const double volume_after = signed_volume(relaxed);
@@ -285,11 +286,86 @@ void test_collapse_on_other_meshes()
   CHECK(throws(open_quad));
 }
 
+/// The relaxation on a quad mesh it did not produce, without tangent planes: a cube
+/// of 6 x 6 quads per side whose face vertices are jittered within their side. The
+/// vertices must even out and stay on the cube: on their side, edge or corner.
+void test_relax_on_cube()
+{
+  const int n = 6;
+  Mesh cube = make_lattice_cube(n);
+  std::vector<Mesh::Edge_index> diagonals;
+  for(auto e : edges(cube)) {
+    const auto h = halfedge(e, cube);
+    const Vector d = cube.point(target(h, cube)) - cube.point(source(h, cube));
+    if(std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()) > 1.5)
+      diagonals.push_back(e);
+  }
+  for(auto e : diagonals)
+    CGAL::Euler::join_face(halfedge(e, cube), cube);
+  cube.collect_garbage();
+  auto on_boundary = [n](double x) { return x == 0 || x == n; };
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  for(auto v : vertices(cube)) {
+    double c[3] = {cube.point(v).x(), cube.point(v).y(), cube.point(v).z()};
+    int on_sides = 0;
+    for(double x : c)
+      on_sides += on_boundary(x);
+    if(on_sides == 1) // inside a side: move within it
+      for(double& x : c)
+        if(!on_boundary(x))
+          x += jitter(rng);
+    cube.point(v) = Point(c[0], c[1], c[2]);
+  }
+  auto spread = [](const Mesh& m) {
+    double sum = 0, sum2 = 0;
+    for(auto e : edges(m)) {
+      const double l = std::sqrt(CGAL::to_double(CGAL::Polygon_mesh_processing::squared_edge_length(e, m)));
+      sum += l;
+      sum2 += l * l;
+    }
+    const double count = double(num_edges(m)), mean = sum / count;
+    return std::sqrt(std::max(0., sum2 / count - mean * mean)) / mean;
+  };
+  const double spread_before = spread(cube);
+  std::vector<bool> inside_a_side; // by vertex index, before the relaxation
+  for(auto v : vertices(cube)) {
+    int on_sides = 0;
+    for(double x : {cube.point(v).x(), cube.point(v).y(), cube.point(v).z()})
+      on_sides += on_boundary(x);
+    inside_a_side.push_back(on_sides == 1);
+  }
+  RSR::relax_on_tangent_planes(cube, params::number_of_iterations(5));
+  // distance from the cube's surface, for vertices inside a side and on its edges
+  double worst_side = 0, worst_edge = 0;
+  for(auto v : vertices(cube)) {
+    const Point& p = cube.point(v);
+    double distance = 1e9;
+    for(double x : {p.x(), p.y(), p.z()})
+      distance = std::min(distance, std::min(std::abs(x), std::abs(n - x)));
+    double& worst = inside_a_side[std::size_t(v)] ? worst_side : worst_edge;
+    worst = std::max(worst, distance);
+  }
+  std::cout << "jittered cube relaxed: edge-length spread " << spread_before << " -> " << spread(cube)
+            << "; farthest vertex from the cube: " << worst_side << " inside the sides, " << worst_edge
+            << " on edges and corners (edge length 1)" << std::endl;
+  CHECK(spread(cube) < 0.5 * spread_before);
+  // a flat side: the projection brings vertices back on its plane, but for the
+  // paper's weak extra plane (epsilon = 1e-3 against about 4 planes) that keeps a
+  // 2.5e-4 part of the offset that moving crease neighbours cause (a few percent)
+  CHECK(worst_side < 1e-5);
+  // creases: the paper's projection along one line cannot meet two planes exactly;
+  // vertices stay within a few percent of the edge length of the crease
+  CHECK(worst_edge < 0.05);
+  CHECK(CGAL::is_valid_polygon_mesh(cube));
+}
+
 int main(int argc, char** argv)
 {
   test_symmetric_eigen();
   test_quad_cube();
   test_collapse_on_other_meshes();
+  test_relax_on_cube();
   check_input("sphere", make_sphere(1.0, 4), 0.03);
   check_input("torus", make_torus(1.0, 0.4, 120, 60), 0.03);
   check_input("genus 2", make_genus_2(3), 0.02);

@@ -12,7 +12,6 @@
 #include <CGAL/Range_space_remeshing/internal/Quad_collapser.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/property_map.h>
@@ -54,10 +53,10 @@ pass collapses nothing or `number_of_iterations` passes have run.
   - `vertex_point_map` (read-write; default: the mesh's point map);
   - `geom_traits` (the 3-D kernel; default: the kernel of the point type);
   - `vertex_normal_map` (read-write, unit normals; default: the average normal of each
-    vertex's tangent planes if `vertex_tangent_planes_map` is given, else computed
-    from the mesh);
+    vertex's tangent planes);
   - `vertex_tangent_planes_map` (read-write, vertex -> `Tangent_planes`, e.g. from
-    `dualize()`; default: one plane per vertex, its position and normal);
+    `dualize()`; default: the planes of each vertex's incident faces, so that merged
+    vertices stay on the mesh's faces, creases and corners);
   - `vertex_is_constrained_map` (vertex -> bool, default: none constrained);
   - `number_of_iterations` (the maximum number of passes, default 10).
 \throws Remeshing_error if the mesh is empty or has a border.
@@ -96,23 +95,14 @@ Collapse_statistics collapse_quads(PolygonMesh& mesh,
 
   // Unit normals, by vertex index: what the projection of merged vertices uses.
   std::vector<internal::Vec3> normals(index_bound);
-  std::vector<Tangent_planes> own_planes(has_planes ? 0 : index_bound);
+  std::vector<Tangent_planes> own_planes;
+  if constexpr(!has_planes)
+    own_planes = internal::planes_of_incident_faces(mesh, vpm, vertex_index);
   auto planes = choose_parameter(get_parameter(np, internal_np::vertex_tangent_planes_map),
                                  boost::make_iterator_property_map(own_planes.begin(), vertex_index));
-  for(vertex_descriptor v : vertices(mesh)) {
-    internal::Vec3 n = {{0, 0, 0}};
-    if constexpr(has_normals)
-      n = internal::to_vec3(get(normal_map, v));
-    else if constexpr(has_planes)
-      n = internal::average_normal(get(planes, v));
-    else
-      n = internal::to_vec3(CGAL::Polygon_mesh_processing::compute_vertex_normal(
-          v, mesh, CGAL::parameters::vertex_point_map(vpm).geom_traits(GeomTraits())));
-    normals[get(vertex_index, v)] = internal::normalized(n);
-    if constexpr(!has_planes)
-      own_planes[get(vertex_index, v)].emplace_back(internal::to_vec3(get(vpm, v)),
-                                                    normals[get(vertex_index, v)]);
-  }
+  for(vertex_descriptor v : vertices(mesh))
+    normals[get(vertex_index, v)] = internal::normalized(
+        has_normals ? internal::to_vec3(get(normal_map, v)) : internal::average_normal(get(planes, v)));
 
   auto face_index = CGAL::get_initialized_face_index_map(mesh, np);
   internal::Quad_collapser<PolygonMesh, VPM, decltype(planes), decltype(constrained),

@@ -7,6 +7,7 @@
 #define CGAL_RANGE_SPACE_REMESHING_RELAX_ON_TANGENT_PLANES_H
 
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
+#include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
@@ -14,6 +15,8 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/property_map/property_map.hpp>
 
 #include <chrono>
 #include <vector>
@@ -32,17 +35,21 @@ the vertices evenly but shrinks and smooths, then (b) moves it back along the li
 \f$\lambda = \sum \langle v_i - v', n_i\rangle \langle n', n_i\rangle / (\sum \langle n', n_i\rangle^2 + \epsilon)\f$,
 which undoes the shrinking: vertices slide on the surface, features stay.
 
-\param mesh a polygon mesh whose vertices carry tangent planes (e.g. the output of
-  `dualize()`); positions (and normals if given) are updated.
-\param tangent_planes a readable property map, vertex -> `Tangent_planes`.
-\param np `number_of_iterations` (default 3), `vertex_point_map`, `vertex_normal_map`
-  (read-write; default: the average normal of each vertex's tangent planes).
+\param mesh a polygon mesh (any `FaceGraph`, e.g. the output of `dualize()`);
+  positions (and normals if given) are updated, the connectivity is not.
+\param np optional named parameters:
+  - `vertex_tangent_planes_map` (readable, vertex -> `Tangent_planes`, e.g. from
+    `dualize()` and `collapse_quads()`; default: the planes of each vertex's incident
+    faces, so that vertices of a mesh that came without planes stay on its faces,
+    creases and corners);
+  - `number_of_iterations` (default 3);
+  - `vertex_point_map`;
+  - `vertex_normal_map` (read-write; default: the average normal of each vertex's
+    tangent planes).
 \returns the time taken, in milliseconds.
 */
-template <class PolygonMesh, class TangentPlanesMap,
-          class NamedParameters = CGAL::parameters::Default_named_parameters>
-double relax_on_tangent_planes(PolygonMesh& mesh, TangentPlanesMap tangent_planes,
-                               const NamedParameters& np = CGAL::parameters::default_values())
+template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -62,6 +69,13 @@ double relax_on_tangent_planes(PolygonMesh& mesh, TangentPlanesMap tangent_plane
   auto normal_map = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_normal_map),
                                      CGAL::Constant_property_map<vertex_descriptor, Vector>());
   auto vertex_index = CGAL::get_initialized_vertex_index_map(mesh, np);
+  constexpr bool has_planes =
+      !is_default_parameter<NamedParameters, internal_np::vertex_tangent_planes_map_t>::value;
+  std::vector<Tangent_planes> own_planes;
+  if constexpr(!has_planes)
+    own_planes = internal::planes_of_incident_faces(mesh, vpm, vertex_index);
+  const auto tangent_planes = choose_parameter(get_parameter(np, internal_np::vertex_tangent_planes_map),
+                                               boost::make_iterator_property_map(own_planes.begin(), vertex_index));
 
   const std::size_t n = internal::index_bound(vertices(mesh), vertex_index);
   std::vector<Vec3> position(n), normal(n), next_position(n), next_normal(n);

@@ -87,8 +87,9 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
   const int steps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 3);
   if(steps > 0)
     stats.time_relaxation_ms = relax_on_tangent_planes(
-        quads, planes,
-        CGAL::parameters::number_of_iterations(steps).vertex_normal_map(normals).vertex_point_map(out_vpm));
+        quads, parameters::vertex_tangent_planes_map(planes, CGAL::parameters::number_of_iterations(steps)
+                                                                 .vertex_normal_map(normals)
+                                                                 .vertex_point_map(out_vpm)));
   stats.time_total_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return stats;

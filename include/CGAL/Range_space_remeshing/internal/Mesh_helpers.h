@@ -8,11 +8,16 @@
 
 // Small FaceGraph helpers shared by the dual, the collapse and the relaxation.
 
+#include <CGAL/Range_space_remeshing/Tangent_planes.h>
+#include <CGAL/Range_space_remeshing/internal/Quadric.h>
+
 #include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
+#include <CGAL/boost/graph/iterator.h>
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
 #include <cstddef>
+#include <vector>
 
 namespace CGAL {
 namespace Range_space_remeshing {
@@ -36,6 +41,33 @@ std::size_t index_bound(const Range& range, IndexMap index)
   for(auto x : range)
     bound = (std::max)(bound, std::size_t(get(index, x)) + 1);
   return bound;
+}
+
+/// The tangent planes of a mesh that comes without any (one it did not produce): for
+/// each vertex, by vertex index, the planes (centroid, unit normal) of its faces.
+/// Projecting on them keeps a vertex on its faces' planes, on a crease line between
+/// two of them, at a corner among three.
+template <class PolygonMesh, class VertexPointMap, class VertexIndexMap>
+std::vector<Tangent_planes> planes_of_incident_faces(const PolygonMesh& mesh, VertexPointMap vpm,
+                                                     VertexIndexMap vertex_index)
+{
+  std::vector<Tangent_planes> planes(index_bound(vertices(mesh), vertex_index));
+  std::vector<Vec3> corners;
+  for(auto f : faces(mesh)) {
+    corners.clear();
+    Vec3 centroid = {{0, 0, 0}};
+    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh)) {
+      corners.push_back(to_vec3(get(vpm, v)));
+      for(int d = 0; d < 3; ++d)
+        centroid[d] += corners.back()[d];
+    }
+    for(int d = 0; d < 3; ++d)
+      centroid[d] /= double(corners.size());
+    const Vec3 normal = normalized(newell_normal(corners));
+    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      planes[get(vertex_index, v)].emplace_back(centroid, normal);
+  }
+  return planes;
 }
 
 } // namespace internal

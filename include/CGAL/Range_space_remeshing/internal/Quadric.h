@@ -16,6 +16,7 @@
 #include <array>
 #include <cmath>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Range_space_remeshing {
@@ -54,6 +55,45 @@ inline Vec3 difference(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1
 inline Vec3 cross(const Vec3& a, const Vec3& b)
 {
   return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+}
+
+/// Twice the vector area of a polygon (Newell's normal).
+inline Vec3 newell_normal(const std::vector<Vec3>& polygon)
+{
+  Vec3 n = {{0, 0, 0}};
+  for(std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec3& p = polygon[i];
+    const Vec3& q = polygon[(i + 1) % polygon.size()];
+    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+  }
+  return n;
+}
+
+/// Whether the polygon turns left at every corner, seen from the side of `normal`.
+inline bool is_convex(const std::vector<Vec3>& polygon, const Vec3& normal)
+{
+  const std::size_t n = polygon.size();
+  for(std::size_t i = 0; i < n; ++i) {
+    const Vec3& p = polygon[(i + n - 1) % n];
+    const Vec3& q = polygon[i];
+    const Vec3& r = polygon[(i + 1) % n];
+    if(!(dot(cross(difference(q, p), difference(r, q)), normal) > 0))
+      return false;
+  }
+  return true;
+}
+
+/// Whether every triangle of the fan from the polygon's first corner turns left, seen
+/// from the side of `normal`.
+inline bool fan_turns_with(const std::vector<Vec3>& polygon, const Vec3& normal)
+{
+  const Vec3& apex = polygon.front();
+  for(std::size_t i = 1; i + 1 < polygon.size(); ++i)
+    if(!(dot(cross(difference(polygon[i], apex), difference(polygon[i + 1], apex)), normal) > 0))
+      return false;
+  return true;
 }
 
 /// A unit vector orthogonal to the unit vector n.
