@@ -32,6 +32,9 @@ Vec3 to_vec3(const Point& p)
   return {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
 }
 
+/// (lets maps and normals be given as std::array as well as CGAL points and vectors)
+inline Vec3 to_vec3(const Vec3& v) { return v; }
+
 inline Vec3 normalized(const Vec3& v)
 {
   const double length = std::sqrt(dot(v, v));

@@ -1,0 +1,178 @@
+// The ready-made range maps: Gauss map and position + normal. Every face in one cell
+// (bounded variation), and the paper's anisotropy claim: under the Gauss map, faces
+// are elongated along the direction of minimum curvature with an aspect ratio that
+// follows the ratio of the principal curvatures; under position + normal, the normal
+// weight moves the remesh from anisotropic to uniform.
+#include "test_support.h"
+
+#include <CGAL/Range_space_remeshing/Gauss_range_map.h>
+#include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
+
+#include <algorithm>
+
+using namespace test;
+namespace params = CGAL::parameters;
+
+/// A closed capsule along z: a cylinder of radius r and length `length` between two
+/// hemispheres, from rings of `around` vertices.
+Mesh make_capsule(double r, double length, int around, int rings_per_cap, int rings_along)
+{
+  std::vector<std::pair<double, double>> profile; // (radius, z), bottom to top, no poles
+  for(int i = 1; i <= rings_per_cap; ++i) {
+    const double phi = -M_PI / 2 + M_PI / 2 * i / rings_per_cap;
+    profile.emplace_back(r * std::cos(phi), r * std::sin(phi));
+  }
+  for(int i = 1; i <= rings_along; ++i)
+    profile.emplace_back(r, length * i / rings_along);
+  for(int i = 1; i < rings_per_cap; ++i) {
+    const double phi = M_PI / 2 * i / rings_per_cap;
+    profile.emplace_back(r * std::cos(phi), length + r * std::sin(phi));
+  }
+  Mesh m;
+  const auto bottom = m.add_vertex(Point(0, 0, -r));
+  std::vector<std::vector<Mesh::Vertex_index>> rings;
+  for(const auto& [radius, z] : profile) {
+    rings.emplace_back();
+    for(int j = 0; j < around; ++j) {
+      const double t = 2 * M_PI * j / around;
+      rings.back().push_back(m.add_vertex(Point(radius * std::cos(t), radius * std::sin(t), z)));
+    }
+  }
+  const auto top = m.add_vertex(Point(0, 0, length + r));
+  for(int j = 0; j < around; ++j) {
+    const int k = (j + 1) % around;
+    m.add_face(bottom, rings.front()[k], rings.front()[j]);
+    m.add_face(top, rings.back()[j], rings.back()[k]);
+    for(std::size_t i = 0; i + 1 < rings.size(); ++i) {
+      m.add_face(rings[i][j], rings[i][k], rings[i + 1][k]);
+      m.add_face(rings[i][j], rings[i + 1][k], rings[i + 1][j]);
+    }
+  }
+  return m;
+}
+
+/// Median over the faces whose vertices all satisfy `near` of (extent along axis
+/// `along`) / (extent along axis `across`); also returns how many faces counted.
+template <class Near>
+std::pair<double, std::size_t> median_aspect(const Mesh& remesh, int along, int across, Near near)
+{
+  std::vector<double> ratios;
+  for(auto f : faces(remesh)) {
+    double low[3] = {1e30, 1e30, 1e30}, high[3] = {-1e30, -1e30, -1e30};
+    bool inside = true;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, remesh), remesh)) {
+      const Point& p = remesh.point(v);
+      inside = inside && near(p);
+      for(int d = 0; d < 3; ++d) {
+        low[d] = std::min(low[d], p[d]);
+        high[d] = std::max(high[d], p[d]);
+      }
+    }
+    if(inside && high[across] > low[across])
+      ratios.push_back((high[along] - low[along]) / (high[across] - low[across]));
+  }
+  if(ratios.empty())
+    return {0, 0};
+  std::nth_element(ratios.begin(), ratios.begin() + ratios.size() / 2, ratios.end());
+  return {ratios[ratios.size() / 2], ratios.size()};
+}
+
+/// The Gauss map on an ellipsoid of semi-axes (3, 2, 1): at the end of each axis the
+/// principal curvatures are known, their ratio is 9/4, 9 or 4, and the faces there must
+/// be elongated along the flatter direction by that ratio. Near the end of an axis,
+/// the Gauss map pushed onto the cube is the gradient of the height function, linear
+/// to first order: cells become rectangles of sides h / kappa_1 and h / kappa_2.
+void test_gauss_map_anisotropy()
+{
+  const double semi[3] = {3, 2, 1};
+  const Mesh ellipsoid = make_ellipsoid(semi[0], semi[1], semi[2], 6);
+  Mesh remesh;
+  const auto f = RSR::make_gauss_range_map(ellipsoid);
+  const double h = 0.04; // not 1/n: the sides of the cube are not grid planes
+  remesh_and_check(ellipsoid, remesh, RSR::parameters::range_map(f).grid_spacing(h));
+  std::cout << "Gauss map of the ellipsoid: " << num_vertices(remesh) << " vertices" << std::endl;
+  for(int axis = 0; axis < 3; ++axis) {
+    // the two other axes: curvature at the end of `axis` along axis i is semi[axis] / semi[i]^2
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    const int flat = semi[i] > semi[j] ? i : j, bent = flat == i ? j : i;
+    const double expected = (semi[flat] * semi[flat]) / (semi[bent] * semi[bent]);
+    // faces near the end of the axis, within 3 expected face sizes h / kappa of it
+    auto near = [&](const Point& p) {
+      const double size_flat = h * semi[flat] * semi[flat] / semi[axis];
+      const double size_bent = h * semi[bent] * semi[bent] / semi[axis];
+      return p[axis] > 0 && std::abs(p[flat]) < 3 * size_flat && std::abs(p[bent]) < 3 * size_bent;
+    };
+    const auto [aspect, counted] = median_aspect(remesh, flat, bent, near);
+    std::cout << "  end of axis " << axis << ": median aspect " << aspect << " over " << counted
+              << " faces, curvature ratio " << expected << std::endl;
+    CHECK(counted >= 8);
+    // measured within 4 % (h = 0.03 to 0.06): the curvatures vary over three faces;
+    // 10 % leaves room for where whole faces fall in the window
+    CHECK(std::abs(aspect / expected - 1) < 0.1);
+  }
+}
+
+/// Position + normal on a capsule: along the cylinder the normal does not change, so
+/// with a large normal weight faces are long along the axis (bounded by the position
+/// part) and narrow around it (bounded by the normal part); with a normal weight near
+/// 0 they are as long as wide.
+void test_position_normal_weights()
+{
+  const double radius = 1, length = 8;
+  const Mesh capsule = make_capsule(radius, length, 256, 32, 320);
+  auto on_cylinder = [&](const Point& p) { return p.z() > 1 && p.z() < length - 1 && p.x() > 0.3; };
+  // extent along the axis over extent along y, on the side x > 0 (where the circle
+  // runs along y)
+  auto near = [&](const Point& p) { return on_cylinder(p) && std::abs(p.y()) < 0.3; };
+  const double h = 0.2;
+  double previous = 0;
+  for(double normal_weight : {1e-3, 2.0, 5.0}) {
+    Mesh remesh;
+    const auto f = RSR::make_position_normal_range_map(capsule, 1.0, normal_weight);
+    remesh_and_check(capsule, remesh, RSR::parameters::range_map(f).grid_spacing(h));
+    const auto [aspect, counted] = median_aspect(remesh, 2, 1, near);
+    std::cout << "position + normal, normal weight " << normal_weight << ": " << num_vertices(remesh)
+              << " vertices, median aspect " << aspect << " over " << counted << " faces" << std::endl;
+    CHECK(counted >= 8);
+    if(normal_weight < 0.01)
+      CHECK(std::abs(aspect - 1) < 0.2); // uniform: the cells of the identity map
+    else
+      CHECK(aspect > 1.5 * previous); // more normal weight, longer faces
+    previous = aspect;
+  }
+}
+
+/// Bounded variation: the positions of every face's vertices (sampled on the input)
+/// differ by at most h / position_weight per coordinate, whatever the normal weight.
+void test_bounded_position_variation()
+{
+  const Mesh input = make_ellipsoid(1.5, 1.0, 0.7, 4);
+  for(double normal_weight : {0.5, 2.0}) {
+    const double position_weight = 2.0, h = 0.1;
+    Mesh remesh;
+    const auto f = RSR::make_position_normal_range_map(input, position_weight, normal_weight);
+    remesh_and_check(input, remesh, RSR::parameters::range_map(f).grid_spacing(h));
+    double worst = 0;
+    for(auto face : faces(remesh)) {
+      double low[3] = {1e30, 1e30, 1e30}, high[3] = {-1e30, -1e30, -1e30};
+      for(auto v : CGAL::vertices_around_face(halfedge(face, remesh), remesh))
+        for(int d = 0; d < 3; ++d) {
+          low[d] = std::min(low[d], remesh.point(v)[d]);
+          high[d] = std::max(high[d], remesh.point(v)[d]);
+        }
+      for(int d = 0; d < 3; ++d)
+        worst = std::max(worst, (high[d] - low[d]) * position_weight / h);
+    }
+    std::cout << "R^6, normal weight " << normal_weight << ": largest position extent " << worst
+              << " cells" << std::endl;
+    CHECK(worst <= 1 + 1e-9);
+  }
+}
+
+int main()
+{
+  test_gauss_map_anisotropy();
+  test_position_normal_weights();
+  test_bounded_position_variation();
+  return report("test_range_maps");
+}
