@@ -8,6 +8,8 @@
 // stderr). The output file is written atomically: it never exists half-written,
 // and is not created on failure.
 
+#include <CGAL/Range_space_remeshing/Gauss_range_map.h>
+#include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -48,7 +50,16 @@ const char* usage =
     "Formats (by extension): .off .obj .ply .stl. Polygonal input is triangulated.\n"
     "\n"
     "options:\n"
-    "  --map NAME            the map f: identity (the default): the position, D = 3\n"
+    "  --map NAME            the map f:\n"
+    "                          identity (the default): the position, D = 3: a\n"
+    "                          uniform remesh\n"
+    "                          position-normal: position and unit normal (times W),\n"
+    "                          D = 6: faces small where the surface bends, each\n"
+    "                          face's normals vary by at most H / W\n"
+    "                          gauss: the normal pushed onto the unit cube, D = 3:\n"
+    "                          faces bounded in normal variation only (anisotropic)\n"
+    "  --normal-weight W     weight of the normal in position-normal (default 0.1;\n"
+    "                        0: the identity's uniform remesh)\n"
     "  --cell-size H         cell size as a fraction of the input's bounding-box\n"
     "                        diagonal (default 0.01)\n"
     "  --absolute            H is in the map's own units, with the grid origin at 0\n"
@@ -107,6 +118,8 @@ struct Options
 {
   std::string input, output, map = "identity", output_kind = "dual", placement = "qem";
   double cell_size = 0.01;
+  double normal_weight = 0.1;
+  double length_unit = 1; // the bounding-box diagonal in relative mode
   int relax = 3;
   bool absolute = false, seeded = false, stats = false, collapse = true;
   long target_vertices = 0;
@@ -137,8 +150,12 @@ Options parse_arguments(int argc, char** argv)
       std::exit(EXIT_SUCCESS);
     } else if(arg == "--map") {
       options.map = value();
-      if(options.map != "identity")
-        fail("unknown map '" + options.map + "' (available: identity)");
+      if(options.map != "identity" && options.map != "gauss" && options.map != "position-normal")
+        fail("unknown map '" + options.map + "' (available: identity, gauss, position-normal)");
+    } else if(arg == "--normal-weight") {
+      options.normal_weight = parse_number(arg, value());
+      if(!(options.normal_weight >= 0) || options.normal_weight > 1e6)
+        fail("--normal-weight must be between 0 and 10^6");
     } else if(arg == "--cell-size") {
       options.cell_size = parse_number(arg, value());
       if(!(options.cell_size > 0))
@@ -280,25 +297,43 @@ std::size_t components(const Mesh& mesh)
       mesh, CGAL::make_property_map(ids));
 }
 
-RSR::Remesh_statistics remesh(const Mesh& input, double h, const Options& options, Mesh& output)
+/// The primal remesh, or the whole dual pipeline, with the named parameters `np`
+/// (cell size, seeding, relaxation steps and, but for the identity, the range map).
+template <class NamedParameters>
+RSR::Remesh_statistics run(const Mesh& input, const NamedParameters& np, const Options& options, Mesh& output)
 {
-  output.clear();
-  const auto seeding =
-      options.seeded ? RSR::Seeding_method::SEEDED : RSR::Seeding_method::COMPLETE_SCAN;
   RSR::Remesh_statistics stats;
   if(options.output_kind == "primal") {
-    stats.primal = RSR::primal_remesh(input, output,
-                                      CGAL::parameters::grid_spacing(h).seeding_method(seeding));
+    stats.primal = RSR::primal_remesh(input, output, np);
     stats.time_total_ms = stats.primal.time_total_ms;
     return stats;
   }
   const auto placement =
       options.placement == "average" ? RSR::Dual_placement::AVERAGE : RSR::Dual_placement::QEM;
+  return RSR::remesh(input, output,
+                     RSR::parameters::quad_collapse(options.collapse, RSR::parameters::dual_placement(placement, np)));
+}
+
+/// Remeshes with the map of the options. In relative mode (length_unit = the bounding
+/// box diagonal) the weights are scaled so that a cell of size H bounds positions by
+/// H diagonals and normals by H / W (Gauss map: H, in units of the unit cube).
+RSR::Remesh_statistics remesh(const Mesh& input, double h, const Options& options, Mesh& output)
+{
+  output.clear();
+  const auto seeding =
+      options.seeded ? RSR::Seeding_method::SEEDED : RSR::Seeding_method::COMPLETE_SCAN;
   const auto np = CGAL::parameters::grid_spacing(h).seeding_method(seeding).number_of_relaxation_steps(
       options.relax);
-  return RSR::remesh(input, output,
-                     RSR::parameters::quad_collapse(options.collapse,
-                                                    RSR::parameters::dual_placement(placement, np)));
+  if(options.map == "gauss")
+    return run(input, RSR::parameters::range_map(RSR::make_gauss_range_map(input, options.length_unit), np),
+               options, output);
+  if(options.map == "position-normal")
+    return run(input,
+               RSR::parameters::range_map(RSR::make_position_normal_range_map(
+                                              input, 1.0, options.normal_weight * options.length_unit),
+                                          np),
+               options, output);
+  return run(input, np, options, output);
 }
 
 /// Chooses the cell size so that the output has about `target` vertices: the count
@@ -341,7 +376,8 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
   std::ostringstream json;
   json.precision(6);
   json << "{\"input\": \"" << options.input << "\", \"output\": \"" << options.output << "\""
-       << ", \"map\": \"" << options.map << "\", \"D\": 3"
+       << ", \"map\": \"" << options.map << "\", \"D\": " << (options.map == "position-normal" ? 6 : 3)
+       << ", \"normal_weight\": " << (options.map == "position-normal" ? options.normal_weight : 0.)
        << ", \"cell_size\": " << h << ", \"seeding\": \"" << (options.seeded ? "seeded" : "complete")
        << "\", \"output_kind\": \"" << options.output_kind << "\", \"placement\": \""
        << options.placement << "\", \"collapse\": " << (options.collapse ? "true" : "false")
@@ -382,7 +418,7 @@ int main(int argc, char** argv)
   // dealt with by the program; keep stderr to the one-line error contract.
   CGAL::set_warning_handler([](const char*, const char*, const char*, int, const char*) {});
   try {
-    const Options options = parse_arguments(argc, argv);
+    Options options = parse_arguments(argc, argv);
     bool triangulated = false;
     const Mesh input = read_input(options.input, triangulated);
     if(!is_supported_format(options.output))
@@ -397,6 +433,7 @@ int main(int argc, char** argv)
       if(!(diagonal > 0))
         fail("the input's bounding box is a single point");
       h *= diagonal;
+      options.length_unit = diagonal;
     }
     Mesh output;
     RSR::Remesh_statistics stats;

@@ -99,6 +99,26 @@ if(NOT plain_collapsed EQUAL 0 OR NOT collapsed GREATER 0 OR NOT collapse_non_qu
   math(EXPR failures "${failures} + 1")
 endif()
 
+# the other maps: D in the stats; the normal weight adapts the density to curvature
+run(0 g.off --stats --output primal --map gauss --cell-size 0.2 ${elephant} g.off)
+string(JSON gauss_d GET "${out}" D)
+run(0 r0.off --stats --output primal --map position-normal --normal-weight 0 --cell-size 0.02 ${elephant} r0.off)
+string(JSON flat_d GET "${out}" D)
+string(JSON flat_vertices GET "${out}" output_vertices)
+run(0 r1.off --stats --output primal --map position-normal --normal-weight 0.1 --cell-size 0.02 ${elephant} r1.off)
+string(JSON bent_vertices GET "${out}" output_vertices)
+run(0 i0.off --stats --output primal --cell-size 0.02 ${elephant} i0.off)
+string(JSON identity_vertices GET "${out}" output_vertices)
+if(NOT gauss_d EQUAL 3 OR NOT flat_d EQUAL 6 OR NOT flat_vertices EQUAL identity_vertices
+   OR NOT bent_vertices GREATER flat_vertices)
+  message(SEND_ERROR "maps: D ${gauss_d} and ${flat_d}; vertices: identity ${identity_vertices}, "
+                     "position-normal at weight 0: ${flat_vertices}, at 0.1: ${bent_vertices}")
+  math(EXPR failures "${failures} + 1")
+endif()
+run(2 x.off --map nowhere ${elephant} x.off)
+run(2 x.off --normal-weight -1 ${elephant} x.off)
+run(2 x.off --normal-weight abc ${elephant} x.off)
+
 # determinism: same input and options, same bytes
 run(0 b.off --cell-size 0.01 ${elephant} b.off)
 file(SHA256 ${WORK_DIR}/a.off hash_a)
