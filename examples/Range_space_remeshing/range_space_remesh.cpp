@@ -396,6 +396,7 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
        << ", \"joined_triangle_pairs\": " << all.dual.joined_triangle_pairs
        << ", \"dual_dropped_pieces\": " << all.dual.dropped_pieces
        << ", \"collapsed_quads\": " << all.collapse.collapsed_quads
+       << ", \"removed_doublets\": " << all.collapse.removed_doublets
        << ", \"valence_histogram\": {";
   bool first = true;
   for(const auto& [valence, count] : valences) {

@@ -89,8 +89,8 @@ void check_collapsed(const Mesh& before, const Mesh& after, const RSR::Collapse_
   CHECK(doublets(after) <= doublets(before));
   CHECK_EQ(euler_characteristic(after), euler_characteristic(before));
   CHECK_EQ(RSR::internal::number_of_parallel_edges(after), std::size_t(0));
-  CHECK_EQ(num_faces(after), num_faces(before) - stats.collapsed_quads);
-  CHECK_EQ(num_vertices(after), num_vertices(before) - stats.collapsed_quads);
+  CHECK_EQ(num_faces(after), num_faces(before) - stats.collapsed_quads - stats.removed_doublets);
+  CHECK_EQ(num_vertices(after), num_vertices(before) - stats.collapsed_quads - stats.removed_doublets);
   CHECK(non_convex_faces(after) <= non_convex_faces(before));
 }
 
@@ -127,7 +127,7 @@ void check_input(const std::string& name, const Mesh& input, double relative_cel
                      collapsed_planes, params::vertex_normal_map(collapsed_normals)));
   check_collapsed(qem.quads, collapsed, cs);
   const Distance d_collapsed = distance_to(input, collapsed);
-  std::cout << "  collapsed " << cs.collapsed_quads << " quads in " << cs.passes << " passes ("
+  std::cout << "  removed " << cs.removed_doublets << " doublets, collapsed " << cs.collapsed_quads << " quads in " << cs.passes << " passes ("
             << cs.refused_topology << " refused by topology, " << cs.refused_fold_over
             << " by fold-over): valence 4 " << 100 * valence_4_share(qem.quads) << " % -> "
             << 100 * valence_4_share(collapsed) << " %, RMS " << d_collapsed.rms << ", non-convex faces "
@@ -238,10 +238,37 @@ void test_collapse_on_other_meshes()
     CGAL::Euler::join_face(halfedge(e, cube), cube);
   cube.collect_garbage();
   const std::string cube_before = fingerprint(cube);
+  Mesh with_doublet = cube;
   const auto on_cube = RSR::collapse_quads(cube); // planes and normals from the mesh itself
   CHECK_EQ(on_cube.collapsed_quads, std::size_t(0));
   CHECK_EQ(on_cube.passes, std::size_t(1));
   CHECK(fingerprint(cube) == cube_before);
+
+  // a doublet: the quad in the middle of a side split into two quads sharing two
+  // edges (a diagonal with a vertex in its middle); it must be dissolved
+  for(auto f : faces(with_doublet)) {
+    bool middle = true;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, with_doublet), with_doublet))
+      middle = middle && degree(v, with_doublet) == 4;
+    if(!middle)
+      continue;
+    const auto h = halfedge(f, with_doublet);
+    const auto diagonal = CGAL::Euler::split_face(h, next(next(h, with_doublet), with_doublet), with_doublet);
+    const auto split = CGAL::Euler::split_edge(diagonal, with_doublet);
+    with_doublet.point(target(split, with_doublet)) =
+        CGAL::midpoint(with_doublet.point(source(split, with_doublet)),
+                       with_doublet.point(target(next(split, with_doublet), with_doublet)));
+    break;
+  }
+  CHECK_EQ(num_faces(with_doublet), num_faces(cube) + 1);
+  const auto dissolved = RSR::collapse_quads(with_doublet);
+  CHECK_EQ(dissolved.removed_doublets, std::size_t(1));
+  CHECK_EQ(dissolved.collapsed_quads, std::size_t(0));
+  CHECK_EQ(num_faces(with_doublet), num_faces(cube));
+  CHECK_EQ(num_vertices(with_doublet), num_vertices(cube));
+  CHECK(CGAL::is_valid_polygon_mesh(with_doublet));
+  for(auto f : faces(with_doublet))
+    CHECK_EQ(degree(f, with_doublet), std::size_t(4));
 
   // an irregular dual: the same collapses on Surface_mesh and on Polyhedron_3
   const Mesh input = make_torus(1.0, 0.4, 120, 60);

@@ -80,6 +80,9 @@ struct Collapse_statistics
 {
   /// quads collapsed along a diagonal (each removes one face and one vertex)
   std::size_t collapsed_quads = 0;
+  /// vertices of valence 2 dissolved first, each merging its two quads into one
+  /// (each also removes one face and one vertex)
+  std::size_t removed_doublets = 0;
   /// passes: the first over all quads, each next one over the quads around the vertices
   /// that the previous pass changed, until none is left or the limit is hit
   std::size_t passes = 0;

@@ -68,7 +68,11 @@ public:
   {
     Collapse_statistics stats;
     std::vector<Candidate> candidates;
-    std::vector<face_descriptor> to_examine(faces(mesh_).begin(), faces(mesh_).end());
+    stats.removed_doublets = remove_doublets();
+    std::vector<face_descriptor> to_examine;
+    for(face_descriptor f : faces(mesh_))
+      if(!removed_faces_[get(face_index_, f)])
+        to_examine.push_back(f);
     for(int pass = 1; pass <= maximum_passes && !to_examine.empty(); ++pass) {
       ++stats.passes;
       collect_candidates(to_examine, candidates);
@@ -285,6 +289,61 @@ private:
       touch_faces_around(v);
   }
 
+  /// Dissolves the vertices of valence 2 (doublets: two quads sharing two edges, as
+  /// the dual leaves where it joins faces) whose two faces are distinct quads: the two
+  /// become one quad. Refused where a neighbour would drop below valence 3, where the
+  /// merged face would visit a vertex twice, or where it would fold over.
+  std::size_t remove_doublets()
+  {
+    std::vector<vertex_descriptor> doublets;
+    for(vertex_descriptor v : vertices(mesh_))
+      if(valence(v) == 2)
+        doublets.push_back(v);
+    std::size_t removed = 0;
+    for(vertex_descriptor v : doublets) {
+      const halfedge_descriptor o2 = halfedge(v, mesh_);        // b -> v, in F
+      const halfedge_descriptor e1 = next(o2, mesh_);           // v -> a, in F
+      const halfedge_descriptor o1 = opposite(e1, mesh_);       // a -> v, in G
+      const halfedge_descriptor e2 = next(o1, mesh_);           // v -> b, in G
+      if(e2 != opposite(o2, mesh_) || is_border(o2, mesh_) || is_border(o1, mesh_))
+        continue;
+      const face_descriptor f = face(o2, mesh_), g = face(o1, mesh_);
+      if(f == g || degree(f, mesh_) != 4 || degree(g, mesh_) != 4)
+        continue;
+      const vertex_descriptor a = target(e1, mesh_), b = target(e2, mesh_);
+      const halfedge_descriptor a_x = next(e1, mesh_), x_b = prev(o2, mesh_);
+      const halfedge_descriptor b_y = next(e2, mesh_), y_a = prev(o1, mesh_);
+      if(a == b || target(a_x, mesh_) == target(b_y, mesh_) || valence(a) < 4 || valence(b) < 4 ||
+         get(constrained_, v))
+        continue;
+      // the merged quad (a, x, b, y) must turn like the two it replaces
+      corners_ = {position(a), position(target(a_x, mesh_)), position(b), position(target(b_y, mesh_))};
+      const Vec3 merged = newell_normal(corners_);
+      corners_ = {position(v), position(a), position(target(a_x, mesh_)), position(b)};
+      Vec3 before = newell_normal(corners_);
+      corners_ = {position(v), position(b), position(target(b_y, mesh_)), position(a)};
+      const Vec3 other = newell_normal(corners_);
+      for(int d = 0; d < 3; ++d)
+        before[d] += other[d];
+      if(!(dot(merged, before) > 0))
+        continue;
+      set_next(x_b, b_y, mesh_);
+      set_next(y_a, a_x, mesh_);
+      set_face(b_y, f, mesh_);
+      set_face(y_a, f, mesh_);
+      set_halfedge(f, a_x, mesh_);
+      set_halfedge(a, y_a, mesh_);
+      set_halfedge(b, x_b, mesh_);
+      --valences_[index(a)];
+      --valences_[index(b)];
+      valences_[index(v)] = 0;
+      removed_faces_[get(face_index_, g)] = true;
+      unlinked_.push_back({g, e1, e2, v});
+      ++removed;
+    }
+    return removed;
+  }
+
   /// Removes the elements of the collapsed quads. Deferred to the end of the run: a
   /// `Polyhedron_3` frees removed faces, and the pass lists may still name them.
   void remove_unlinked_elements()
@@ -344,10 +403,10 @@ private:
   mutable std::vector<vertex_descriptor> around_a_;
   mutable std::vector<face_descriptor> faces_a_;
   std::vector<halfedge_descriptor> into_c_;
-  struct Unlinked // what a collapse took out of the mesh's connectivity
+  struct Unlinked // what a collapse (or a doublet removal) took out of the connectivity
   {
     face_descriptor quad;
-    halfedge_descriptor h1, h2;
+    halfedge_descriptor h1, h2; // one halfedge of each of the two removed edges
     vertex_descriptor c;
   };
   std::vector<Unlinked> unlinked_;
