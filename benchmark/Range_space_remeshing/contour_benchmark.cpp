@@ -7,6 +7,7 @@
 //
 // Prints a Markdown table on stdout.
 
+#include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 #include <CGAL/Range_space_remeshing/dualize.h>
 #include <CGAL/Range_space_remeshing/primal_remesh.h>
 #include <CGAL/Range_space_remeshing/quad_collapse.h>
@@ -188,6 +189,45 @@ void measure_dual(const std::string& name, const Mesh& input, double h, int runs
   std::cout << line << std::endl;
 }
 
+/// The cost of the dimension: primal contouring under the identity (D = 3) and under
+/// position + normal (D = 6, normal weight 0.5 diagonals, denser where the surface
+/// bends), each at about `target` output vertices; median time per output vertex.
+void measure_dimensions(const std::string& name, const Mesh& input, std::size_t target, int runs)
+{
+  const auto box = CGAL::Polygon_mesh_processing::bbox(input);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
+                                    CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  const auto f6 = RSR::make_position_normal_range_map(input, 1.0, 0.5 * diagonal);
+  auto timed = [&](double h, bool six, std::size_t& vertices) {
+    Mesh output;
+    const auto stats = six ? RSR::primal_remesh(input, output, RSR::parameters::range_map(f6).grid_spacing(h))
+                           : RSR::primal_remesh(input, output, CGAL::parameters::grid_spacing(h));
+    vertices = stats.output_vertices;
+    return stats.time_total_ms;
+  };
+  for(bool six : {false, true}) {
+    double h = 0.01 * diagonal;
+    std::size_t vertices = 0;
+    for(int iteration = 0; iteration < 20; ++iteration) { // cell size for the target
+      timed(h, six, vertices);
+      const double ratio = double(vertices) / double(target);
+      if(std::abs(ratio - 1) < 0.03)
+        break;
+      h *= std::sqrt(ratio);
+    }
+    std::vector<double> times;
+    timed(h, six, vertices); // warm-up
+    for(int r = 0; r < runs; ++r)
+      times.push_back(timed(h, six, vertices));
+    const double ms = median(times);
+    char line[256];
+    std::snprintf(line, sizeof(line), "| %s | %d | %zu | %.2f | %.0f |", name.c_str(), six ? 6 : 3, vertices,
+                  ms, 1e6 * ms / double(vertices));
+    std::cout << line << std::endl;
+  }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -244,5 +284,11 @@ int main(int argc, char** argv)
             << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for(const auto& [name, input, h, contour_ms] : duals)
     measure_dual(name, input, h, runs, contour_ms);
+  std::cout << "\nThe cost of the dimension D (complete scan, same output size; D = 6: position and "
+               "normal, normal weight 0.5 bounding-box diagonals):\n\n"
+            << "| mesh | D | output vertices | total ms | ns per output vertex |\n"
+            << "|---|---:|---:|---:|---:|\n";
+  for(const auto& [name, input, h, contour_ms] : duals)
+    measure_dimensions(name, input, num_vertices(input) / 4, runs);
   return 0;
 }
