@@ -26,6 +26,36 @@ struct Dual_run
   RSR::Dual_statistics stats;
 };
 
+/// A cube of n x n x n unit quads (the lattice cube's squares, unsplit).
+Mesh make_quad_cube(int n)
+{
+  Mesh cube = make_lattice_cube(n);
+  std::vector<Mesh::Edge_index> diagonals;
+  for(auto e : edges(cube)) {
+    const auto h = halfedge(e, cube);
+    const Vector d = cube.point(target(h, cube)) - cube.point(source(h, cube));
+    if(std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()) > 1.5) // the square's diagonal
+      diagonals.push_back(e);
+  }
+  for(auto e : diagonals)
+    CGAL::Euler::join_face(halfedge(e, cube), cube);
+  cube.collect_garbage();
+  return cube;
+}
+
+/// Standard deviation of the edge lengths over their mean.
+double edge_length_spread(const Mesh& m)
+{
+  double sum = 0, sum2 = 0;
+  for(auto e : edges(m)) {
+    const double l = std::sqrt(CGAL::to_double(CGAL::Polygon_mesh_processing::squared_edge_length(e, m)));
+    sum += l;
+    sum2 += l * l;
+  }
+  const double count = double(num_edges(m)), mean = sum / count;
+  return std::sqrt(std::max(0., sum2 / count - mean * mean)) / mean;
+}
+
 double valence_4_share(const Mesh& m)
 {
   std::size_t regular = 0;
@@ -145,23 +175,13 @@ void check_input(const std::string& name, const Mesh& input, double relative_cel
   const double volume_before = signed_volume(collapsed);
   const double volume_after = signed_volume(relaxed);
   const double diagonal_before = bbox_diagonal(collapsed), diagonal_after = bbox_diagonal(relaxed);
-  auto spread = [](const Mesh& m) {
-    double sum = 0, sum2 = 0;
-    for(auto e : edges(m)) {
-      const double l = std::sqrt(CGAL::to_double(CGAL::Polygon_mesh_processing::squared_edge_length(e, m)));
-      sum += l;
-      sum2 += l * l;
-    }
-    const double n = double(num_edges(m)), mean = sum / n;
-    return std::sqrt(std::max(0., sum2 / n - mean * mean)) / mean;
-  };
   const Distance d_relaxed = distance_to(input, relaxed);
   std::cout << "  relaxed: volume " << volume_after / volume_before << " of the dual's, bbox diagonal "
-            << diagonal_after / diagonal_before << ", edge-length spread " << spread(collapsed)
-            << " -> " << spread(relaxed) << ", RMS " << d_relaxed.rms << std::endl;
+            << diagonal_after / diagonal_before << ", edge-length spread " << edge_length_spread(collapsed)
+            << " -> " << edge_length_spread(relaxed) << ", RMS " << d_relaxed.rms << std::endl;
   CHECK(std::abs(volume_after / volume_before - 1) < 0.005);
   CHECK(std::abs(diagonal_after / diagonal_before - 1) < 0.005);
-  CHECK(spread(relaxed) < spread(collapsed));
+  CHECK(edge_length_spread(relaxed) < edge_length_spread(collapsed));
 }
 
 void test_symmetric_eigen()
@@ -201,17 +221,7 @@ void test_quad_cube()
 {
   // the dual of a quad mesh it did not produce: a cube of 3x3 quads per side.
   // Its 8 corners have valence 3 and no valence-3 neighbour: 8 triangles remain.
-  Mesh cube = make_lattice_cube(3);
-  std::vector<Mesh::Edge_index> diagonals;
-  for(auto e : edges(cube)) {
-    const auto h = halfedge(e, cube);
-    const Vector d = cube.point(target(h, cube)) - cube.point(source(h, cube));
-    if(std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()) > 1.5) // the square's diagonal
-      diagonals.push_back(e);
-  }
-  for(auto e : diagonals)
-    CGAL::Euler::join_face(halfedge(e, cube), cube);
-  cube.collect_garbage();
+  Mesh cube = make_quad_cube(3);
   Mesh dual;
   const auto stats = RSR::dualize(cube, dual);
   CHECK(CGAL::is_valid_polygon_mesh(dual));
@@ -226,17 +236,7 @@ void test_quad_cube()
 /// alike; constrained vertices; bad input.
 void test_collapse_on_other_meshes()
 {
-  Mesh cube = make_lattice_cube(3);
-  std::vector<Mesh::Edge_index> diagonals;
-  for(auto e : edges(cube)) {
-    const auto h = halfedge(e, cube);
-    const Vector d = cube.point(target(h, cube)) - cube.point(source(h, cube));
-    if(std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()) > 1.5)
-      diagonals.push_back(e);
-  }
-  for(auto e : diagonals)
-    CGAL::Euler::join_face(halfedge(e, cube), cube);
-  cube.collect_garbage();
+  Mesh cube = make_quad_cube(3);
   const std::string cube_before = fingerprint(cube);
   Mesh with_doublet = cube;
   const auto on_cube = RSR::collapse_quads(cube); // planes and normals from the mesh itself
@@ -319,17 +319,7 @@ void test_collapse_on_other_meshes()
 void test_relax_on_cube()
 {
   const int n = 6;
-  Mesh cube = make_lattice_cube(n);
-  std::vector<Mesh::Edge_index> diagonals;
-  for(auto e : edges(cube)) {
-    const auto h = halfedge(e, cube);
-    const Vector d = cube.point(target(h, cube)) - cube.point(source(h, cube));
-    if(std::abs(d.x()) + std::abs(d.y()) + std::abs(d.z()) > 1.5)
-      diagonals.push_back(e);
-  }
-  for(auto e : diagonals)
-    CGAL::Euler::join_face(halfedge(e, cube), cube);
-  cube.collect_garbage();
+  Mesh cube = make_quad_cube(n);
   auto on_boundary = [n](double x) { return x == 0 || x == n; };
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> jitter(-0.3, 0.3);
@@ -344,17 +334,7 @@ void test_relax_on_cube()
           x += jitter(rng);
     cube.point(v) = Point(c[0], c[1], c[2]);
   }
-  auto spread = [](const Mesh& m) {
-    double sum = 0, sum2 = 0;
-    for(auto e : edges(m)) {
-      const double l = std::sqrt(CGAL::to_double(CGAL::Polygon_mesh_processing::squared_edge_length(e, m)));
-      sum += l;
-      sum2 += l * l;
-    }
-    const double count = double(num_edges(m)), mean = sum / count;
-    return std::sqrt(std::max(0., sum2 / count - mean * mean)) / mean;
-  };
-  const double spread_before = spread(cube);
+  const double spread_before = edge_length_spread(cube);
   std::vector<bool> inside_a_side; // by vertex index, before the relaxation
   for(auto v : vertices(cube)) {
     int on_sides = 0;
@@ -373,10 +353,10 @@ void test_relax_on_cube()
     double& worst = inside_a_side[std::size_t(v)] ? worst_side : worst_edge;
     worst = std::max(worst, distance);
   }
-  std::cout << "jittered cube relaxed: edge-length spread " << spread_before << " -> " << spread(cube)
+  std::cout << "jittered cube relaxed: edge-length spread " << spread_before << " -> " << edge_length_spread(cube)
             << "; farthest vertex from the cube: " << worst_side << " inside the sides, " << worst_edge
             << " on edges and corners (edge length 1)" << std::endl;
-  CHECK(spread(cube) < 0.5 * spread_before);
+  CHECK(edge_length_spread(cube) < 0.5 * spread_before);
   // a flat side: the projection brings vertices back on its plane, but for the
   // paper's weak extra plane (epsilon = 1e-3 against about 4 planes) that keeps a
   // 2.5e-4 part of the offset that moving crease neighbours cause (a few percent)
