@@ -195,7 +195,7 @@ edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index)
   };
   join_all(0, 0); // chains of valence-2 vertices
   join_all(0, 1); // ... take a valence-3 end
-  for(int pass = 0; pass < 8; ++pass) { // match charge-1 groups, most constrained first
+  for(;;) { // match charge-1 groups, most constrained first, until none is left
     std::vector<halfedge_descriptor> options;
     std::vector<std::size_t> count(n, 0);
     for(halfedge_descriptor h : low_edges) {
