@@ -5,6 +5,7 @@
 // weight moves the remesh from anisotropic to uniform.
 #include "test_support.h"
 
+#include <CGAL/Range_space_remeshing/Color_range_maps.h>
 #include <CGAL/Range_space_remeshing/Gauss_range_map.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 
@@ -186,10 +187,85 @@ void test_bounded_position_variation()
   }
 }
 
+/// The colour-gradient magnitudes of a colour linear in z on the unit sphere,
+/// r = (z + 1) / 2: on the surface its gradient has length sin(theta) / 2, 0.5 at the
+/// equator; the constant channels have none.
+void test_color_gradient_magnitudes()
+{
+  Mesh sphere = make_sphere(1.0, 5);
+  auto colors = sphere.add_property_map<Mesh::Vertex_index, std::array<double, 3>>("v:rgb").first;
+  for(auto v : vertices(sphere))
+    colors[v] = {{(sphere.point(v).z() + 1) / 2, 0.25, 1.0}};
+  const RSR::Color_gradient_magnitude_map<Mesh, decltype(colors)> gradients(sphere, colors);
+  double worst = 0;
+  std::size_t counted = 0;
+  for(auto v : vertices(sphere))
+    if(std::abs(sphere.point(v).z()) < 0.05) {
+      const auto g = get(gradients, v);
+      worst = std::max(worst, std::max(std::abs(g[0] - 0.5), std::max(std::abs(g[1]), std::abs(g[2]))));
+      ++counted;
+    }
+  std::cout << "colour gradient on the equator of a sphere: worst error " << worst << " over " << counted
+            << " vertices" << std::endl;
+  CHECK(counted > 20);
+  CHECK(worst < 0.01); // the tessellation's flatness: a few 1e-3
+}
+
+/// A sphere, white below z = 0.3 and red above: the colour maps refine the remesh
+/// along the transition, R^6 does not see it; the sampled colours of every face
+/// differ by at most h / w_c per channel.
+void test_color_maps()
+{
+  Mesh sphere = make_sphere(1.0, 5);
+  auto colors = sphere.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+  for(auto v : vertices(sphere))
+    colors[v] = sphere.point(v).z() > 0.3 ? CGAL::IO::Color(255, 0, 0) : CGAL::IO::Color(255, 255, 255);
+  const double h = 0.1;
+  auto in_band = [](const Mesh& m) {
+    std::size_t n = 0;
+    for(auto v : vertices(m))
+      n += std::abs(m.point(v).z() - 0.3) < 0.1;
+    return n;
+  };
+  Mesh r6, direct, gradient;
+  remesh_and_check(sphere, r6,
+                   RSR::parameters::range_map(RSR::make_position_normal_range_map(sphere, 1.0, 0.5)).grid_spacing(h));
+  auto sampled = direct.add_property_map<Mesh::Vertex_index, std::array<double, 3>>("v:color").first;
+  const auto direct_map = RSR::make_position_normal_color_range_map(sphere, colors, 1.0, 0.5, 1.0);
+  RSR::primal_remesh(sphere, direct, RSR::parameters::range_map(direct_map).grid_spacing(h).vertex_color_map(colors),
+                     params::vertex_color_map(sampled));
+  Mesh checked;
+  remesh_and_check(sphere, checked, RSR::parameters::range_map(direct_map).grid_spacing(h));
+  CHECK(fingerprint(checked) == fingerprint(direct));
+  remesh_and_check(sphere, gradient,
+                   RSR::parameters::range_map(RSR::make_position_normal_color_gradient_range_map(sphere, colors, 1.0, 0.5, 0.05))
+                       .grid_spacing(h));
+  std::cout << "red/white sphere, vertices within 0.1 of the transition: R^6 " << in_band(r6) << ", R^9 direct "
+            << in_band(direct) << ", R^9 gradient " << in_band(gradient) << std::endl;
+  CHECK(in_band(direct) > 2 * in_band(r6));
+  CHECK(in_band(gradient) > 2 * in_band(r6));
+  // bounded colour variation, on the sampled colours
+  double worst = 0;
+  for(auto f : faces(direct)) {
+    std::array<double, 3> low = {{1, 1, 1}}, high = {{0, 0, 0}};
+    for(auto v : CGAL::vertices_around_face(halfedge(f, direct), direct))
+      for(int c = 0; c < 3; ++c) {
+        low[c] = std::min(low[c], sampled[v][c]);
+        high[c] = std::max(high[c], sampled[v][c]);
+      }
+    for(int c = 0; c < 3; ++c)
+      worst = std::max(worst, (high[c] - low[c]) / h);
+  }
+  std::cout << "  largest colour variation on a face: " << worst << " cells" << std::endl;
+  CHECK(worst <= 1 + 1e-9);
+}
+
 int main()
 {
   test_gauss_map_anisotropy();
   test_position_normal_weights();
   test_bounded_position_variation();
+  test_color_gradient_magnitudes();
+  test_color_maps();
   return report("test_range_maps");
 }

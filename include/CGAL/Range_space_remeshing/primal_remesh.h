@@ -183,7 +183,7 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
   stats.time_faces_ms = milliseconds_since(start);
   inspect(tracer, complex);
 
-  write_primal_complex(tm, vpm, vertex_index, tracer, complex, out, np_out, stats);
+  write_primal_complex(tm, vpm, vertex_index, tracer, complex, out, np_in, np_out, stats);
   stats.time_output_ms = milliseconds_since(start);
 
   stats.mapped_vertices = tracer.number_of_mapped_vertices();

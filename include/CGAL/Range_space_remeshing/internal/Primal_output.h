@@ -12,6 +12,7 @@
 // triangle at the crossing point.
 
 #include <CGAL/Range_space_remeshing/Statistics.h>
+#include <CGAL/Range_space_remeshing/internal/Color.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
@@ -79,9 +80,9 @@ void reserve_if_possible(CGAL::Surface_mesh<Point>& out, std::size_t nv, std::si
 }
 
 template <class TriangleMesh, class VPM, class VertexIndexMap, class Tracer, class PolygonMesh,
-          class NamedParametersOut>
+          class NamedParametersIn, class NamedParametersOut>
 void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex_index, Tracer& tracer,
-                          const Primal_complex& complex, PolygonMesh& out,
+                          const Primal_complex& complex, PolygonMesh& out, const NamedParametersIn& np_in,
                           const NamedParametersOut& np_out, Statistics& stats)
 {
   using CGAL::parameters::choose_parameter;
@@ -104,6 +105,16 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
   auto normal_map = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_normal_map),
                                      CGAL::Constant_property_map<out_vertex, Out_vector>());
   Lazy_vertex_normals<TriangleMesh, VPM, VertexIndexMap> input_normals(tm, vpm, vertex_index);
+  // colours: sampled where the input has them (np_in) and the output wants them (np_out)
+  constexpr bool wants_colors =
+      !is_default_parameter<NamedParametersIn, CGAL::internal_np::vertex_color_map_t>::value &&
+      !is_default_parameter<NamedParametersOut, CGAL::internal_np::vertex_color_map_t>::value;
+  using in_vertex = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  const auto input_colors = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_color_map),
+                                             CGAL::Constant_property_map<in_vertex, CGAL::IO::Color>());
+  auto output_colors = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_color_map),
+                                        CGAL::Constant_property_map<out_vertex, CGAL::IO::Color>());
+  using Out_color = typename boost::property_traits<decltype(output_colors)>::value_type;
 
   const auto& vertices = tracer.intersection_vertices();
   const std::uint32_t none = Primal_complex::none;
@@ -117,7 +128,7 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
     const auto w = tracer.barycentric_coordinates(vertices[v]);
     const auto h0 = halfedge(tracer.face_of(vertices[v]), tm);
     const auto corners = {source(h0, tm), target(h0, tm), target(next(h0, tm), tm)};
-    std::array<double, 3> p = {{0, 0, 0}}, n = {{0, 0, 0}};
+    std::array<double, 3> p = {{0, 0, 0}}, n = {{0, 0, 0}}, rgb = {{0, 0, 0}};
     int c = 0;
     for(auto corner : corners) {
       const auto& q = get(vpm, corner);
@@ -129,6 +140,11 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
         for(int d = 0; d < 3; ++d)
           n[d] += w[c] * nc[d];
       }
+      if constexpr(wants_colors) {
+        const Vec3 corner_rgb = to_rgb(get(input_colors, corner));
+        for(int d = 0; d < 3; ++d)
+          rgb[d] += w[c] * corner_rgb[d];
+      }
       ++c;
     }
     const out_vertex ov = add_vertex(out);
@@ -137,6 +153,8 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
       const Vec3 unit = normalized(n); // zero-area corners: the zero vector
       put(normal_map, ov, Out_vector(unit[0], unit[1], unit[2]));
     }
+    if constexpr(wants_colors)
+      put(output_colors, ov, from_rgb<Out_color>(rgb));
     vertex_of[v] = ov;
     ++number_of_vertices;
   }
