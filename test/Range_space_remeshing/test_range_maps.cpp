@@ -7,6 +7,7 @@
 
 #include <CGAL/Range_space_remeshing/Color_range_maps.h>
 #include <CGAL/Range_space_remeshing/Gauss_range_map.h>
+#include <CGAL/Range_space_remeshing/remesh.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 
 #include <algorithm>
@@ -258,6 +259,24 @@ void test_color_maps()
   }
   std::cout << "  largest colour variation on a face: " << worst << " cells" << std::endl;
   CHECK(worst <= 1 + 1e-9);
+
+  // the whole pipeline carries the colours to the quads: red on top, white below
+  Mesh quads;
+  auto quad_colors = quads.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+  RSR::remesh(sphere, quads, RSR::parameters::range_map(direct_map).grid_spacing(h).vertex_color_map(colors),
+              params::vertex_color_map(quad_colors));
+  std::size_t wrong = 0;
+  for(auto v : vertices(quads)) {
+    const double z = quads.point(v).z();
+    const auto& c = quad_colors[v];
+    if(z > 0.4)
+      wrong += !(c.r() == 255 && c.g() == 0 && c.b() == 0);
+    else if(z < 0.2)
+      wrong += !(c.r() == 255 && c.g() == 255 && c.b() == 255);
+  }
+  std::cout << "  quads: " << num_faces(quads) << ", vertices away from the transition with a wrong colour: "
+            << wrong << std::endl;
+  CHECK_EQ(wrong, std::size_t(0));
 }
 
 int main()

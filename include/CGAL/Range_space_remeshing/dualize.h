@@ -10,6 +10,7 @@
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
 #include <CGAL/Range_space_remeshing/parameters.h>
+#include <CGAL/Range_space_remeshing/internal/Color.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
@@ -251,8 +252,10 @@ well placed. Its normal is the normalised average of the vertices' normals.
 \param primal a closed polygon mesh (any `FaceListGraph`).
 \param quads receives the dual (appended); a `MutableFaceGraph`.
 \param np_in `vertex_point_map`, `vertex_normal_map` (unit normals of the primal
-  vertices; default: computed from the mesh), `dual_placement`.
+  vertices; default: computed from the mesh), `dual_placement`, `vertex_color_map`
+  (colours of the primal vertices, `CGAL::IO::Color` or triples in [0, 1]).
 \param np_out `vertex_point_map`, `vertex_normal_map` (receives the dual normals),
+  `vertex_color_map` (receives the average colour of each primal face),
   `vertex_tangent_planes_map` (receives each dual vertex's `Tangent_planes`, which
   `relax_on_tangent_planes()` uses).
 \throws Remeshing_error if `primal` is empty or has a border.
@@ -321,6 +324,17 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     normal_of[get(vertex_index, v)] = internal::normalized(primal_normal(v));
   }
 
+  // colours: the average of the primal face's, where the primal has them (np_in) and
+  // the dual wants them (np_out)
+  constexpr bool wants_colors =
+      !is_default_parameter<NamedParametersIn, CGAL::internal_np::vertex_color_map_t>::value &&
+      !is_default_parameter<NamedParametersOut, CGAL::internal_np::vertex_color_map_t>::value;
+  const auto in_colors = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_color_map),
+                                          CGAL::Constant_property_map<vertex_descriptor, CGAL::IO::Color>());
+  auto out_colors = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_color_map),
+                                     CGAL::Constant_property_map<dual_vertex, CGAL::IO::Color>());
+  using Out_color = typename boost::property_traits<decltype(out_colors)>::value_type;
+
   // a dual vertex per primal face
   std::vector<dual_vertex> dual_of_face(num_faces(primal));
   Tangent_planes planes;
@@ -335,6 +349,15 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
       put(out_normals, dv, Out_vector(placed.second[0], placed.second[1], placed.second[2]));
     if constexpr(wants_planes)
       put(out_planes, dv, planes);
+    if constexpr(wants_colors) {
+      internal::Vec3 rgb = {{0, 0, 0}};
+      for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, primal), primal)) {
+        const internal::Vec3 c = internal::to_rgb(get(in_colors, v));
+        for(int d = 0; d < 3; ++d)
+          rgb[d] += c[d] / double(planes.size());
+      }
+      put(out_colors, dv, internal::from_rgb<Out_color>(rgb));
+    }
     dual_of_face[get(face_index, f)] = dv;
   }
 

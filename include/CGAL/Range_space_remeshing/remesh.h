@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/properties.h>
 
+#include <array>
 #include <chrono>
 
 namespace CGAL {
@@ -44,7 +45,9 @@ The whole pipeline: `primal_remesh()` of `tm`, `dualize()` of the result into
   `vertex_point_map`, `geom_traits`), plus `dual_placement` (default
   `Dual_placement::QEM`), `quad_collapse` (default `true`) and
   `number_of_relaxation_steps` (default 3).
-\param np_out `vertex_point_map` of `quads`.
+\param np_out `vertex_point_map` of `quads`; `vertex_color_map` (receives colours, if `np`
+  has the input's `vertex_color_map`: sampled on the primal, averaged per quad; a
+  collapsed pair keeps one of its two colours, the relaxation does not resample).
 */
 template <class TriangleMesh, class QuadMesh,
           class NamedParameters = CGAL::parameters::Default_named_parameters,
@@ -63,9 +66,18 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
 
   const auto start = std::chrono::steady_clock::now();
   Remesh_statistics stats;
+  // vertex colours go along where the input has them (np) and the output wants them (np_out)
+  constexpr bool wants_colors =
+      !CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_color_map_t>::value &&
+      !CGAL::parameters::is_default_parameter<NamedParametersOut, CGAL::internal_np::vertex_color_map_t>::value;
   Primal primal;
   auto primal_normals = primal.add_property_map<typename Primal::Vertex_index, Vector>("v:normal").first;
-  stats.primal = primal_remesh(tm, primal, np, CGAL::parameters::vertex_normal_map(primal_normals));
+  auto primal_colors = primal.add_property_map<typename Primal::Vertex_index, std::array<double, 3>>("v:color").first;
+  const auto primal_out = CGAL::parameters::vertex_normal_map(primal_normals);
+  if constexpr(wants_colors)
+    stats.primal = primal_remesh(tm, primal, np, primal_out.vertex_color_map(primal_colors));
+  else
+    stats.primal = primal_remesh(tm, primal, np, primal_out);
 
   const Out_VPM out_vpm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
                                            get_property_map(CGAL::vertex_point, quads));
@@ -73,11 +85,14 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
   auto normals = get(CGAL::dynamic_vertex_property_t<Out_vector>(), quads);
   const Dual_placement placement =
       choose_parameter(get_parameter(np, internal_np::dual_placement), Dual_placement::QEM);
-  stats.dual = dualize(primal, quads,
-                       parameters::dual_placement(placement,
-                                                  CGAL::parameters::vertex_normal_map(primal_normals)),
-                       parameters::vertex_tangent_planes_map(
-                           planes, CGAL::parameters::vertex_normal_map(normals).vertex_point_map(out_vpm)));
+  const auto dual_in = parameters::dual_placement(placement, CGAL::parameters::vertex_normal_map(primal_normals));
+  const auto dual_out = parameters::vertex_tangent_planes_map(
+      planes, CGAL::parameters::vertex_normal_map(normals).vertex_point_map(out_vpm));
+  if constexpr(wants_colors)
+    stats.dual = dualize(primal, quads, dual_in.vertex_color_map(primal_colors),
+                         dual_out.vertex_color_map(get_parameter(np_out, CGAL::internal_np::vertex_color_map)));
+  else
+    stats.dual = dualize(primal, quads, dual_in, dual_out);
 
   if(choose_parameter(get_parameter(np, internal_np::quad_collapse), true))
     stats.collapse = collapse_quads(
