@@ -8,6 +8,7 @@
 // stderr). The output file is written atomically: it never exists half-written,
 // and is not created on failure.
 
+#include <CGAL/Range_space_remeshing/Color_range_maps.h>
 #include <CGAL/Range_space_remeshing/Gauss_range_map.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
@@ -27,6 +28,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <fstream>
 #include <iostream>
 #include <map>
 #include <sstream>
@@ -58,8 +60,17 @@ const char* usage =
     "                          face's normals vary by at most H / W\n"
     "                          gauss: the normal pushed onto the unit cube, D = 3:\n"
     "                          faces bounded in normal variation only (anisotropic)\n"
-    "  --normal-weight W     weight of the normal in position-normal (default 0.1;\n"
-    "                        0: the identity's uniform remesh)\n"
+    "                          position-normal-color: position, normal and vertex\n"
+    "                          colour (r, g, b in [0, 1], times C), D = 9: each\n"
+    "                          face's colours vary by at most H / C per channel\n"
+    "                          position-normal-color-gradient: the paper's R^9, with\n"
+    "                          the colour gradients' magnitudes (per diagonal)\n"
+    "                        Vertex colours of PLY and COFF inputs go to the output\n"
+    "                        (written to PLY and OFF outputs) whatever the map.\n"
+    "  --normal-weight W     weight of the normal in the position-normal maps\n"
+    "                        (default 0.1; 0: the identity's uniform remesh)\n"
+    "  --color-weight C      weight of the colour in the colour maps (default 1 for\n"
+    "                        position-normal-color, 0.01 for -gradient)\n"
     "  --cell-size H         cell size as a fraction of the input's bounding-box\n"
     "                        diagonal (default 0.01)\n"
     "  --absolute            H is in the map's own units, with the grid origin at 0\n"
@@ -119,6 +130,7 @@ struct Options
   std::string input, output, map = "identity", output_kind = "dual", placement = "qem";
   double cell_size = 0.01;
   double normal_weight = 0.1;
+  double color_weight = -1; // negative: the map's default
   double length_unit = 1; // the bounding-box diagonal in relative mode
   int relax = 3;
   bool absolute = false, seeded = false, stats = false, collapse = true;
@@ -150,8 +162,15 @@ Options parse_arguments(int argc, char** argv)
       std::exit(EXIT_SUCCESS);
     } else if(arg == "--map") {
       options.map = value();
-      if(options.map != "identity" && options.map != "gauss" && options.map != "position-normal")
-        fail("unknown map '" + options.map + "' (available: identity, gauss, position-normal)");
+      if(options.map != "identity" && options.map != "gauss" && options.map != "position-normal" &&
+         options.map != "position-normal-color" && options.map != "position-normal-color-gradient")
+        fail("unknown map '" + options.map +
+             "' (available: identity, gauss, position-normal, position-normal-color, "
+             "position-normal-color-gradient)");
+    } else if(arg == "--color-weight") {
+      options.color_weight = parse_number(arg, value());
+      if(!(options.color_weight >= 0) || options.color_weight > 1e6)
+        fail("--color-weight must be between 0 and 10^6");
     } else if(arg == "--normal-weight") {
       options.normal_weight = parse_number(arg, value());
       if(!(options.normal_weight >= 0) || options.normal_weight > 1e6)
@@ -218,6 +237,38 @@ bool is_supported_format(const std::string& path)
 }
 
 /// Reads INPUT as a polygon soup and checks it is a usable closed 2-manifold.
+/// The vertex colours of a PLY or COFF file, in file order; empty if it has none
+/// (CGAL's soup readers cannot return them here, its mesh readers can).
+std::vector<CGAL::IO::Color> read_vertex_colors(const std::string& path, std::size_t number_of_points)
+{
+  const std::string ext = extension_of(path);
+  if(ext != "ply" && ext != "off")
+    return {};
+  Mesh mesh;
+  auto colors = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+  bool ok = false;
+  try {
+    Silenced_cerr silence;
+    std::ifstream in(path, std::ios::binary);
+    if(ext == "ply")
+      ok = CGAL::IO::read_PLY(in, mesh); // fills "v:color" where the file has colours
+    else
+      ok = CGAL::IO::read_OFF(in, mesh, CGAL::parameters::vertex_color_map(colors));
+  } catch(const std::exception&) {
+    ok = false;
+  }
+  if(!ok || num_vertices(mesh) != number_of_points)
+    return {};
+  const auto read = mesh.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
+  std::vector<CGAL::IO::Color> result;
+  bool any = false;
+  for(auto v : vertices(mesh)) {
+    result.push_back(read.first[v]);
+    any = any || !(read.first[v] == CGAL::IO::Color());
+  }
+  return any ? result : std::vector<CGAL::IO::Color>();
+}
+
 Mesh read_input(const std::string& path, bool& triangulated)
 {
   if(!is_supported_format(path))
@@ -250,6 +301,19 @@ Mesh read_input(const std::string& path, bool& triangulated)
          "inconsistent orientation)");
   Mesh mesh;
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  const std::vector<CGAL::IO::Color> colors = read_vertex_colors(path, points.size());
+  if(!colors.empty()) {
+    // the mesh's vertices are the points used by a face, in order
+    std::vector<bool> used(points.size(), false);
+    for(const auto& polygon : polygons)
+      for(std::size_t v : polygon)
+        used[v] = true;
+    auto vertex_colors = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+    auto v = vertices(mesh).begin();
+    for(std::size_t i = 0; i < points.size(); ++i)
+      if(used[i])
+        vertex_colors[*v++] = colors[i];
+  }
   triangulated = !CGAL::is_triangle_mesh(mesh);
   if(triangulated) {
     bool all_triangulated = false;
@@ -280,7 +344,13 @@ void write_atomically(const Mesh& mesh, const std::string& path)
   bool ok = false;
   try {
     Silenced_cerr silence;
-    ok = CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
+    const auto colors = mesh.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
+    const std::string ext = extension_of(path);
+    if(colors.second && (ext == "ply" || ext == "off")) // the formats that store vertex colours
+      ok = CGAL::IO::write_polygon_mesh(
+          temporary, mesh, CGAL::parameters::stream_precision(17).vertex_color_map(colors.first));
+    else
+      ok = CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
   } catch(const std::exception&) {
     ok = false;
   }
@@ -302,16 +372,40 @@ std::size_t components(const Mesh& mesh)
 template <class NamedParameters>
 RSR::Remesh_statistics run(const Mesh& input, const NamedParameters& np, const Options& options, Mesh& output)
 {
+  // the input's vertex colours, if it has them, are sampled onto the output
+  constexpr bool colors =
+      !CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_color_map_t>::value;
+  auto np_out = [&output] {
+    return CGAL::parameters::vertex_color_map(
+        output.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first);
+  };
   RSR::Remesh_statistics stats;
   if(options.output_kind == "primal") {
-    stats.primal = RSR::primal_remesh(input, output, np);
+    if constexpr(colors)
+      stats.primal = RSR::primal_remesh(input, output, np, np_out());
+    else
+      stats.primal = RSR::primal_remesh(input, output, np);
     stats.time_total_ms = stats.primal.time_total_ms;
     return stats;
   }
   const auto placement =
       options.placement == "average" ? RSR::Dual_placement::AVERAGE : RSR::Dual_placement::QEM;
-  return RSR::remesh(input, output,
-                     RSR::parameters::quad_collapse(options.collapse, RSR::parameters::dual_placement(placement, np)));
+  const auto np_all = RSR::parameters::quad_collapse(options.collapse, RSR::parameters::dual_placement(placement, np));
+  if constexpr(colors)
+    return RSR::remesh(input, output, np_all, np_out());
+  else
+    return RSR::remesh(input, output, np_all);
+}
+
+/// `run` with the input's vertex colours added to `np`, if it has any.
+template <class NamedParameters>
+RSR::Remesh_statistics run_with_colors(const Mesh& input, const NamedParameters& np, const Options& options,
+                                       Mesh& output)
+{
+  const auto colors = input.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
+  if(colors.second)
+    return run(input, np.vertex_color_map(colors.first), options, output);
+  return run(input, np, options, output);
 }
 
 /// Remeshes with the map of the options. In relative mode (length_unit = the bounding
@@ -325,15 +419,38 @@ RSR::Remesh_statistics remesh(const Mesh& input, double h, const Options& option
   const auto np = CGAL::parameters::grid_spacing(h).seeding_method(seeding).number_of_relaxation_steps(
       options.relax);
   if(options.map == "gauss")
-    return run(input, RSR::parameters::range_map(RSR::make_gauss_range_map(input, options.length_unit), np),
-               options, output);
+    return run_with_colors(
+        input, RSR::parameters::range_map(RSR::make_gauss_range_map(input, options.length_unit), np), options,
+        output);
   if(options.map == "position-normal")
-    return run(input,
-               RSR::parameters::range_map(RSR::make_position_normal_range_map(
-                                              input, 1.0, options.normal_weight * options.length_unit),
-                                          np),
-               options, output);
-  return run(input, np, options, output);
+    return run_with_colors(input,
+                           RSR::parameters::range_map(RSR::make_position_normal_range_map(
+                                                          input, 1.0, options.normal_weight * options.length_unit),
+                                                      np),
+                           options, output);
+  if(options.map == "position-normal-color" || options.map == "position-normal-color-gradient") {
+    const auto colors = input.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
+    if(!colors.second)
+      fail("--map " + options.map + " needs vertex colours: give a PLY or COFF input with colours");
+    const double unit = options.length_unit, wn = options.normal_weight * unit;
+    const bool gradient = options.map == "position-normal-color-gradient";
+    // gradients of sharp colour edges reach 1 / (edge length): a smaller default
+    const double wc = options.color_weight >= 0 ? options.color_weight : (gradient ? 0.01 : 1.0);
+    if(options.map == "position-normal-color")
+      return run_with_colors(input,
+                             RSR::parameters::range_map(RSR::make_position_normal_color_range_map(
+                                                            input, colors.first, 1.0, wn, wc * unit),
+                                                        np),
+                             options, output);
+    // gradient magnitudes are colour per length: one more length unit
+    return run_with_colors(input,
+                           RSR::parameters::range_map(RSR::make_position_normal_color_gradient_range_map(
+                                                          input, colors.first, 1.0, wn,
+                                                          wc * unit * unit),
+                                                      np),
+                           options, output);
+  }
+  return run_with_colors(input, np, options, output);
 }
 
 /// Chooses the cell size so that the output has about `target` vertices: the count
@@ -376,8 +493,8 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
   std::ostringstream json;
   json.precision(6);
   json << "{\"input\": \"" << options.input << "\", \"output\": \"" << options.output << "\""
-       << ", \"map\": \"" << options.map << "\", \"D\": " << (options.map == "position-normal" ? 6 : 3)
-       << ", \"normal_weight\": " << (options.map == "position-normal" ? options.normal_weight : 0.)
+       << ", \"map\": \"" << options.map << "\", \"D\": " << (options.map == "position-normal" ? 6 : options.map.rfind("position-normal-color", 0) == 0 ? 9 : 3)
+       << ", \"normal_weight\": " << (options.map.rfind("position-normal", 0) == 0 ? options.normal_weight : 0.)
        << ", \"cell_size\": " << h << ", \"seeding\": \"" << (options.seeded ? "seeded" : "complete")
        << "\", \"output_kind\": \"" << options.output_kind << "\", \"placement\": \""
        << options.placement << "\", \"collapse\": " << (options.collapse ? "true" : "false")
