@@ -9,6 +9,7 @@
 #include <CGAL/Range_space_remeshing/Gauss_range_map.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
+#include <CGAL/Range_space_remeshing/View_range_map.h>
 
 #include <algorithm>
 
@@ -279,6 +280,83 @@ void test_color_maps()
   CHECK_EQ(wrong, std::size_t(0));
 }
 
+/// The view-dependent map on a slab receding from the camera (a floor 20 units deep):
+/// faces are bounded in pixels, so they are larger in space far away.
+void test_view_map()
+{
+  std::set<std::array<int, 3>> voxels;
+  for(int x = 0; x < 10; ++x)
+    for(int z = 0; z < 100; ++z)
+      voxels.insert({x, 0, z});
+  Mesh slab = make_voxel_surface(voxels, 0.2); // x in [0, 2], y in [0, 0.2], z in [0, 20]
+  for(auto v : vertices(slab)) {
+    const Point& p = slab.point(v);
+    slab.point(v) = Point(p.x() - 1, p.y() - 1.1, -1 - p.z());
+  }
+  const RSR::Camera camera = RSR::make_look_at_camera({{0, 0, 0}}, {{0, -1, -10}}, {{0, 1, 0}}, 60, 800, 600);
+  const RSR::View_range_map<Mesh::Property_map<Mesh::Vertex_index, Point>> f(slab.points(), camera, 10.0);
+  const double h = 20; // pixels
+  Mesh remesh;
+  remesh_and_check(slab, remesh, RSR::parameters::range_map(f).grid_spacing(h));
+  // pixel extent of the faces (sampled positions, projected), and their size in space
+  double worst_pixels = 0, worst_pixels_beyond_5 = 0, near_size = 0, far_size = 0;
+  int near = 0, far = 0;
+  for(auto face : faces(remesh)) {
+    double low[2] = {1e30, 1e30}, high[2] = {-1e30, -1e30}, zlow = 1e30, zhigh = -1e30, depth = 0;
+    int corners = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(face, remesh), remesh)) {
+      const Point& p = remesh.point(v);
+      const auto& m = camera.view_projection;
+      double clip[4];
+      for(int r = 0; r < 4; ++r)
+        clip[r] = m[4 * r] * p.x() + m[4 * r + 1] * p.y() + m[4 * r + 2] * p.z() + m[4 * r + 3];
+      const double pixel[2] = {(clip[0] / clip[3] + 1) / 2 * 800, (clip[1] / clip[3] + 1) / 2 * 600};
+      for(int d = 0; d < 2; ++d) {
+        low[d] = std::min(low[d], pixel[d]);
+        high[d] = std::max(high[d], pixel[d]);
+      }
+      zlow = std::min(zlow, p.z());
+      zhigh = std::max(zhigh, p.z());
+      depth += p.z();
+      ++corners;
+    }
+    depth /= corners;
+    worst_pixels = std::max({worst_pixels, high[0] - low[0], high[1] - low[1]});
+    if(depth < -5)
+      worst_pixels_beyond_5 = std::max({worst_pixels_beyond_5, high[0] - low[0], high[1] - low[1]});
+    if(depth > -4) {
+      near_size += zhigh - zlow;
+      ++near;
+    } else if(depth < -15) {
+      far_size += zhigh - zlow;
+      ++far;
+    }
+  }
+  std::cout << "view map: " << num_faces(remesh) << " faces, largest screen extent " << worst_pixels
+            << " px, " << worst_pixels_beyond_5 << " px beyond depth 5 (cell " << h << " px); mean depth extent near " << near_size / near << ", far "
+            << far_size / far << std::endl;
+  CHECK(near > 10 && far > 10);
+  // The map is linear on each input triangle, the projection is not: the bound holds
+  // for the interpolated pixel coordinates (checked exactly above), and for the true
+  // projection where input triangles are small on the screen. Near the camera the
+  // slab's triangles (0.2 units) cover up to ~75 px, and a face reaches 1.25 cells.
+  CHECK(worst_pixels_beyond_5 < 1.05 * h);
+  CHECK(worst_pixels < 1.5 * h);
+  CHECK(far_size / far > 4 * near_size / near);
+
+  // a vertex behind the camera is an error
+  const RSR::Camera backwards = RSR::make_look_at_camera({{0, 0, -10}}, {{0, 0, 0}}, {{0, 1, 0}}, 60, 800, 600);
+  const RSR::View_range_map<Mesh::Property_map<Mesh::Vertex_index, Point>> behind(slab.points(), backwards);
+  bool thrown = false;
+  try {
+    Mesh out;
+    RSR::primal_remesh(slab, out, RSR::parameters::range_map(behind).grid_spacing(h));
+  } catch(const RSR::Remeshing_error&) {
+    thrown = true;
+  }
+  CHECK(thrown);
+}
+
 int main()
 {
   test_gauss_map_anisotropy();
@@ -286,5 +364,6 @@ int main()
   test_bounded_position_variation();
   test_color_gradient_magnitudes();
   test_color_maps();
+  test_view_map();
   return report("test_range_maps");
 }
