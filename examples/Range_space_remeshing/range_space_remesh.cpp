@@ -11,6 +11,7 @@
 #include <CGAL/Range_space_remeshing/Color_range_maps.h>
 #include <CGAL/Range_space_remeshing/Gauss_range_map.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
+#include <CGAL/Range_space_remeshing/View_range_map.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -25,6 +26,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/IO/polygon_soup_io.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -67,6 +69,15 @@ const char* usage =
     "                          the colour gradients' magnitudes (per diagonal)\n"
     "                        Vertex colours of PLY and COFF inputs go to the output\n"
     "                        (written to PLY and OFF outputs) whatever the map.\n"
+    "                          view: pixel coordinates for the camera of --camera,\n"
+    "                          and depth: faces bounded on the screen; H is a\n"
+    "                          fraction of the viewport's diagonal (pixels with\n"
+    "                          --absolute)\n"
+    "  --camera FILE         the camera of --map view, a text file of lines\n"
+    "                          eye X Y Z / target X Y Z / up X Y Z (default 0 1 0)\n"
+    "                          fov DEGREES (vertical, default 60) / viewport W H\n"
+    "                        ('#' starts a comment); depth counts as many pixels\n"
+    "                        per unit as a lateral step at the target's distance\n"
     "  --normal-weight W     weight of the normal in the position-normal maps\n"
     "                        (default 0.1; 0: the identity's uniform remesh)\n"
     "  --color-weight C      weight of the colour in the colour maps (default 1 for\n"
@@ -132,6 +143,9 @@ struct Options
   double normal_weight = 0.1;
   double color_weight = -1; // negative: the map's default
   double length_unit = 1; // the bounding-box diagonal in relative mode
+  std::string camera_file;
+  RSR::Camera camera;
+  double depth_weight = 0; // view map: pixels per unit of depth, from the camera file
   int relax = 3;
   bool absolute = false, seeded = false, stats = false, collapse = true;
   long target_vertices = 0;
@@ -163,10 +177,13 @@ Options parse_arguments(int argc, char** argv)
     } else if(arg == "--map") {
       options.map = value();
       if(options.map != "identity" && options.map != "gauss" && options.map != "position-normal" &&
-         options.map != "position-normal-color" && options.map != "position-normal-color-gradient")
+         options.map != "position-normal-color" && options.map != "position-normal-color-gradient" &&
+         options.map != "view")
         fail("unknown map '" + options.map +
              "' (available: identity, gauss, position-normal, position-normal-color, "
-             "position-normal-color-gradient)");
+             "position-normal-color-gradient, view)");
+    } else if(arg == "--camera") {
+      options.camera_file = value();
     } else if(arg == "--color-weight") {
       options.color_weight = parse_number(arg, value());
       if(!(options.color_weight >= 0) || options.color_weight > 1e6)
@@ -234,6 +251,62 @@ bool is_supported_format(const std::string& path)
 {
   const std::string ext = extension_of(path);
   return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl";
+}
+
+/// Reads a camera file (see --help); sets the depth weight to the pixels per unit
+/// of a lateral step at the target's distance.
+RSR::Camera read_camera(const std::string& path, double& depth_weight)
+{
+  std::ifstream in(path);
+  if(!in)
+    fail("cannot read the camera file '" + path + "'");
+  std::array<double, 3> eye{}, target{}, up = {{0, 1, 0}};
+  double fov = 60, width = 0, height = 0;
+  bool has_eye = false, has_target = false;
+  std::string line;
+  for(int number = 1; std::getline(in, line); ++number) {
+    line = line.substr(0, line.find('#'));
+    std::istringstream words(line);
+    std::string key;
+    if(!(words >> key))
+      continue;
+    auto numbers = [&](int count) {
+      std::vector<double> values(count);
+      for(double& x : values)
+        if(!(words >> x) || !std::isfinite(x))
+          fail("camera file '" + path + "', line " + std::to_string(number) + ": '" + key + "' expects " +
+               std::to_string(count) + " finite number(s)");
+      std::string extra;
+      if(words >> extra)
+        fail("camera file '" + path + "', line " + std::to_string(number) + ": unexpected '" + extra + "'");
+      return values;
+    };
+    if(key == "eye" || key == "target" || key == "up") {
+      const auto v = numbers(3);
+      (key == "eye" ? eye : key == "target" ? target : up) = {{v[0], v[1], v[2]}};
+      has_eye = has_eye || key == "eye";
+      has_target = has_target || key == "target";
+    } else if(key == "fov") {
+      fov = numbers(1)[0];
+    } else if(key == "viewport") {
+      const auto v = numbers(2);
+      width = v[0];
+      height = v[1];
+    } else {
+      fail("camera file '" + path + "', line " + std::to_string(number) + ": unknown keyword '" + key + "'");
+    }
+  }
+  if(!has_eye || !has_target || !(width > 0))
+    fail("camera file '" + path + "' needs eye, target and viewport lines");
+  try {
+    const RSR::Camera camera = RSR::make_look_at_camera(eye, target, up, fov, width, height);
+    const double distance = std::sqrt(CGAL::square(eye[0] - target[0]) + CGAL::square(eye[1] - target[1]) +
+                                      CGAL::square(eye[2] - target[2]));
+    depth_weight = height / 2 / std::tan(fov * M_PI / 360) / distance;
+    return camera;
+  } catch(const RSR::Remeshing_error& e) {
+    fail("camera file '" + path + "': " + e.what());
+  }
 }
 
 /// Reads INPUT as a polygon soup and checks it is a usable closed 2-manifold.
@@ -450,6 +523,14 @@ RSR::Remesh_statistics remesh(const Mesh& input, double h, const Options& option
                                                       np),
                            options, output);
   }
+  if(options.map == "view")
+    return run_with_colors(
+        input,
+        RSR::parameters::range_map(
+            RSR::View_range_map<boost::property_map<Mesh, CGAL::vertex_point_t>::const_type>(
+                get(CGAL::vertex_point, input), options.camera, options.depth_weight),
+            np),
+        options, output);
   return run_with_colors(input, np, options, output);
 }
 
@@ -552,6 +633,13 @@ int main(int argc, char** argv)
         fail("the input's bounding box is a single point");
       h *= diagonal;
       options.length_unit = diagonal;
+    }
+    if(options.map == "view") {
+      if(options.camera_file.empty())
+        fail("--map view needs --camera FILE");
+      options.camera = read_camera(options.camera_file, options.depth_weight);
+      if(!options.absolute) // H: a fraction of the viewport's diagonal
+        h = options.cell_size * std::hypot(options.camera.width, options.camera.height);
     }
     Mesh output;
     RSR::Remesh_statistics stats;

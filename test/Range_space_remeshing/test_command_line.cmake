@@ -166,6 +166,24 @@ if(NOT r9_d EQUAL 9 OR NOT r9_vertices GREATER r6_vertices OR NOT gradient_verti
   math(EXPR failures "${failures} + 1")
 endif()
 
+# the view map: a camera file; a closer camera sees the elephant bigger: more faces
+file(WRITE ${WORK_DIR}/far.camera "# the elephant from the front\neye 0 0.1 3\ntarget 0 0 0\nfov 40\nviewport 800 600\n")
+file(WRITE ${WORK_DIR}/near.camera "eye 0 0.1 1.5\ntarget 0 0 0  # comment\nfov 40\nviewport 800 600\n")
+file(WRITE ${WORK_DIR}/bad.camera "eye 0 0 1\ntarget 0 0 0\nviewport 800\n")
+file(WRITE ${WORK_DIR}/behind.camera "eye 0 0 -0.1\ntarget 0 0 -5\nviewport 800 600\n")
+run(0 vf.off --stats --output primal --map view --camera far.camera ${elephant} vf.off)
+string(JSON far_vertices GET "${out}" output_vertices)
+run(0 vn.off --stats --output primal --map view --camera near.camera ${elephant} vn.off)
+string(JSON near_vertices GET "${out}" output_vertices)
+if(NOT near_vertices GREATER far_vertices)
+  message(SEND_ERROR "view map: ${near_vertices} vertices from near, ${far_vertices} from far")
+  math(EXPR failures "${failures} + 1")
+endif()
+run(2 x.off --map view ${elephant} x.off)
+run(2 x.off --map view --camera missing.camera ${elephant} x.off)
+run(2 x.off --map view --camera bad.camera ${elephant} x.off)
+run(2 x.off --map view --camera behind.camera ${elephant} x.off)
+
 # determinism: same input and options, same bytes
 run(0 b.off --cell-size 0.01 ${elephant} b.off)
 file(SHA256 ${WORK_DIR}/a.off hash_a)
