@@ -10,6 +10,7 @@
 #include <CGAL/Range_space_remeshing/remesh.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 #include <CGAL/Range_space_remeshing/View_range_map.h>
+#include <CGAL/Range_space_remeshing/insert_crease_triangles.h>
 
 #include <algorithm>
 
@@ -357,6 +358,39 @@ void test_view_map()
   CHECK(thrown);
 }
 
+/// Creases: on a cube, every edge of its sides is a crease; the prepared mesh is the
+/// same surface (area, Euler characteristic) with zero-area strips along the 12 edges
+/// and a zero-area triangle at each of the 8 corners; the normals on each side are
+/// that side's, and the R^6 remesh keeps every invariant on it.
+void test_crease_triangles()
+{
+  const Mesh cube = make_lattice_cube(3);
+  Mesh creased;
+  const RSR::Crease_statistics stats = RSR::insert_crease_triangles(cube, creased, 30.0);
+  std::cout << "cube creases: " << stats.feature_edges << " crease edges, " << stats.added_vertices
+            << " added vertices, " << stats.crease_triangles << " zero-area triangles" << std::endl;
+  CHECK_EQ(stats.feature_edges, std::size_t(36));
+  CHECK_EQ(stats.added_vertices, std::size_t(8 * 2 + 24 * 1));
+  CHECK_EQ(stats.crease_triangles, std::size_t(36 * 2 + 8));
+  CHECK(CGAL::is_valid_polygon_mesh(creased) && CGAL::is_closed(creased) && CGAL::is_triangle_mesh(creased));
+  CHECK_EQ(euler_characteristic(creased), euler_characteristic(cube));
+  CHECK(std::abs(CGAL::Polygon_mesh_processing::area(creased) - CGAL::Polygon_mesh_processing::area(cube)) < 1e-9);
+  // every vertex's area-weighted normal is an axis (one side's normal)
+  const RSR::Lazy_vertex_normal_map<Mesh> normals(creased);
+  std::size_t off_axis = 0;
+  for(auto v : vertices(creased)) {
+    const auto n = get(normals, v);
+    off_axis += !(std::abs(std::abs(n[0]) + std::abs(n[1]) + std::abs(n[2]) - 1) < 1e-12);
+  }
+  CHECK_EQ(off_axis, std::size_t(0));
+  Mesh remesh;
+  remesh_and_check(creased, remesh,
+                   RSR::parameters::range_map(RSR::make_position_normal_range_map(creased, 1.0, 2.0)).grid_spacing(0.37));
+  std::cout << "  R^6 remesh of the creased cube: " << num_vertices(remesh) << " vertices, chi "
+            << euler_characteristic(remesh) << std::endl;
+  CHECK_EQ(euler_characteristic(remesh), 2L);
+}
+
 int main()
 {
   test_gauss_map_anisotropy();
@@ -365,5 +399,6 @@ int main()
   test_color_gradient_magnitudes();
   test_color_maps();
   test_view_map();
+  test_crease_triangles();
   return report("test_range_maps");
 }
