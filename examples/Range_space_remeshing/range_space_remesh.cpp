@@ -12,6 +12,7 @@
 #include <CGAL/Range_space_remeshing/Gauss_range_map.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 #include <CGAL/Range_space_remeshing/View_range_map.h>
+#include <CGAL/Range_space_remeshing/insert_crease_triangles.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -80,6 +81,9 @@ const char* usage =
     "                        per unit as a lateral step at the target's distance\n"
     "  --normal-weight W     weight of the normal in the position-normal maps\n"
     "                        (default 0.1; 0: the identity's uniform remesh)\n"
+    "  --sharp-angle DEG     open the creases (dihedral angle above DEG) with\n"
+    "                        zero-area triangles first, so that the normal maps put\n"
+    "                        arcs along them\n"
     "  --color-weight C      weight of the colour in the colour maps (default 1 for\n"
     "                        position-normal-color, 0.01 for -gradient)\n"
     "  --cell-size H         cell size as a fraction of the input's bounding-box\n"
@@ -142,6 +146,7 @@ struct Options
   double cell_size = 0.01;
   double normal_weight = 0.1;
   double color_weight = -1; // negative: the map's default
+  double sharp_angle = -1;   // negative: no crease preprocessing
   double length_unit = 1; // the bounding-box diagonal in relative mode
   std::string camera_file;
   RSR::Camera camera;
@@ -182,6 +187,10 @@ Options parse_arguments(int argc, char** argv)
         fail("unknown map '" + options.map +
              "' (available: identity, gauss, position-normal, position-normal-color, "
              "position-normal-color-gradient, view)");
+    } else if(arg == "--sharp-angle") {
+      options.sharp_angle = parse_number(arg, value());
+      if(!(options.sharp_angle >= 0 && options.sharp_angle <= 180))
+        fail("--sharp-angle expects an angle between 0 and 180 degrees");
     } else if(arg == "--camera") {
       options.camera_file = value();
     } else if(arg == "--color-weight") {
@@ -403,6 +412,26 @@ Mesh read_input(const std::string& path, bool& triangulated)
   return mesh;
 }
 
+/// With --sharp-angle, the input with zero-area triangles along its creases, so that
+/// the normal maps see each side's normal (vertex colours follow the copies).
+Mesh with_creases_opened(Mesh input, const Options& options)
+{
+  if(!(options.sharp_angle >= 0))
+    return input;
+  Mesh creased;
+  RSR::insert_crease_triangles(input, creased, options.sharp_angle);
+  const auto colors = input.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
+  if(colors.second) { // copies sit at their original's position: match them by position
+    std::map<std::array<double, 3>, CGAL::IO::Color> by_position;
+    for(auto v : vertices(input))
+      by_position[{{input.point(v).x(), input.point(v).y(), input.point(v).z()}}] = colors.first[v];
+    auto copied = creased.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+    for(auto v : vertices(creased))
+      copied[v] = by_position[{{creased.point(v).x(), creased.point(v).y(), creased.point(v).z()}}];
+  }
+  return creased;
+}
+
 /// Writes the mesh next to `path` under a temporary name, then renames it, so that
 /// `path` is never seen half-written.
 void write_atomically(const Mesh& mesh, const std::string& path)
@@ -619,7 +648,7 @@ int main(int argc, char** argv)
   try {
     Options options = parse_arguments(argc, argv);
     bool triangulated = false;
-    const Mesh input = read_input(options.input, triangulated);
+    const Mesh input = with_creases_opened(read_input(options.input, triangulated), options);
     if(!is_supported_format(options.output))
       fail("cannot write '" + options.output + "': unsupported format (use .off .obj .ply .stl)");
 

@@ -184,6 +184,21 @@ run(2 x.off --map view --camera missing.camera ${elephant} x.off)
 run(2 x.off --map view --camera bad.camera ${elephant} x.off)
 run(2 x.off --map view --camera behind.camera ${elephant} x.off)
 
+# creases: with --sharp-angle the normals no longer smear across crease triangles,
+# so fewer cells are spent along them at the same cell size (fandisk)
+run(0 fs.off --stats --output primal --map position-normal --normal-weight 0.5 --cell-size 0.03
+    ${MESH_DIR}/fandisk.off fs.off)
+string(JSON smeared_vertices GET "${out}" output_vertices)
+run(0 fc.off --stats --output primal --map position-normal --normal-weight 0.5 --cell-size 0.03
+    --sharp-angle 40 ${MESH_DIR}/fandisk.off fc.off)
+string(JSON creased_vertices GET "${out}" output_vertices)
+if(NOT creased_vertices LESS smeared_vertices)
+  message(SEND_ERROR "--sharp-angle: ${creased_vertices} vertices, without: ${smeared_vertices}")
+  math(EXPR failures "${failures} + 1")
+endif()
+run(2 x.off --sharp-angle 200 ${elephant} x.off)
+run(2 x.off --sharp-angle abc ${elephant} x.off)
+
 # determinism: same input and options, same bytes
 run(0 b.off --cell-size 0.01 ${elephant} b.off)
 file(SHA256 ${WORK_DIR}/a.off hash_a)
