@@ -7,6 +7,7 @@
 //
 // Prints a Markdown table on stdout.
 
+#include <CGAL/Range_space_remeshing/Color_range_maps.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 #include <CGAL/Range_space_remeshing/dualize.h>
 #include <CGAL/Range_space_remeshing/primal_remesh.h>
@@ -189,41 +190,51 @@ void measure_dual(const std::string& name, const Mesh& input, double h, int runs
   std::cout << line << std::endl;
 }
 
-/// The cost of the dimension: primal contouring under the identity (D = 3) and under
-/// position + normal (D = 6, normal weight 0.5 diagonals, denser where the surface
-/// bends), each at about `target` output vertices; median time per output vertex.
-void measure_dimensions(const std::string& name, const Mesh& input, std::size_t target, int runs)
+/// The cost of the dimension: primal contouring under the identity (D = 3), position +
+/// normal (D = 6, normal weight 0.5 diagonals) and position + normal + colour (D = 9,
+/// colours generated from the position: three bands per axis), each at about `target`
+/// output vertices; median time per output vertex.
+void measure_dimensions(const std::string& name, Mesh input, std::size_t target, int runs)
 {
   const auto box = CGAL::Polygon_mesh_processing::bbox(input);
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
                                     CGAL::square(box.ymax() - box.ymin()) +
                                     CGAL::square(box.zmax() - box.zmin()));
+  auto colors = input.add_property_map<Mesh::Vertex_index, std::array<double, 3>>("v:rgb").first;
+  for(auto v : vertices(input)) {
+    const auto& p = input.point(v);
+    colors[v] = {{0.5 + 0.5 * std::sin(6 * M_PI * p.x() / diagonal), 0.5 + 0.5 * std::sin(6 * M_PI * p.y() / diagonal),
+                  0.5 + 0.5 * std::sin(6 * M_PI * p.z() / diagonal)}};
+  }
   const auto f6 = RSR::make_position_normal_range_map(input, 1.0, 0.5 * diagonal);
-  auto timed = [&](double h, bool six, std::size_t& vertices) {
+  const auto f9 = RSR::make_position_normal_color_range_map(input, colors, 1.0, 0.5 * diagonal, 0.2 * diagonal);
+  auto timed = [&](double h, int d, std::size_t& vertices) {
     Mesh output;
-    const auto stats = six ? RSR::primal_remesh(input, output, RSR::parameters::range_map(f6).grid_spacing(h))
-                           : RSR::primal_remesh(input, output, CGAL::parameters::grid_spacing(h));
+    const auto stats =
+        d == 9   ? RSR::primal_remesh(input, output, RSR::parameters::range_map(f9).grid_spacing(h))
+        : d == 6 ? RSR::primal_remesh(input, output, RSR::parameters::range_map(f6).grid_spacing(h))
+                 : RSR::primal_remesh(input, output, CGAL::parameters::grid_spacing(h));
     vertices = stats.output_vertices;
     return stats.time_total_ms;
   };
-  for(bool six : {false, true}) {
+  for(int d : {3, 6, 9}) {
     double h = 0.01 * diagonal;
     std::size_t vertices = 0;
     for(int iteration = 0; iteration < 20; ++iteration) { // cell size for the target
-      timed(h, six, vertices);
+      timed(h, d, vertices);
       const double ratio = double(vertices) / double(target);
       if(std::abs(ratio - 1) < 0.03)
         break;
       h *= std::sqrt(ratio);
     }
     std::vector<double> times;
-    timed(h, six, vertices); // warm-up
+    timed(h, d, vertices); // warm-up
     for(int r = 0; r < runs; ++r)
-      times.push_back(timed(h, six, vertices));
+      times.push_back(timed(h, d, vertices));
     const double ms = median(times);
     char line[256];
-    std::snprintf(line, sizeof(line), "| %s | %d | %zu | %.2f | %.0f |", name.c_str(), six ? 6 : 3, vertices,
-                  ms, 1e6 * ms / double(vertices));
+    std::snprintf(line, sizeof(line), "| %s | %d | %zu | %.2f | %.0f |", name.c_str(), d, vertices, ms,
+                  1e6 * ms / double(vertices));
     std::cout << line << std::endl;
   }
 }
@@ -285,7 +296,8 @@ int main(int argc, char** argv)
   for(const auto& [name, input, h, contour_ms] : duals)
     measure_dual(name, input, h, runs, contour_ms);
   std::cout << "\nThe cost of the dimension D (complete scan, same output size; D = 6: position and "
-               "normal, normal weight 0.5 bounding-box diagonals):\n\n"
+               "normal, normal weight 0.5 bounding-box diagonals; D = 9: and colours generated from the "
+               "position, colour weight 0.2 diagonals):\n\n"
             << "| mesh | D | output vertices | total ms | ns per output vertex |\n"
             << "|---|---:|---:|---:|---:|\n";
   for(const auto& [name, input, h, contour_ms] : duals)
