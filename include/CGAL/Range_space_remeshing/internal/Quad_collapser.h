@@ -215,12 +215,8 @@ private:
   Vec3 project(const Vec3& x, const Vec3& n, vertex_descriptor a, vertex_descriptor c) const
   {
     double numerator = 0, denominator = epsilon_;
-    for(vertex_descriptor v : {a, c})
-      for(const auto& plane : get(planes_, v)) {
-        const double cosine = dot(n, plane.second);
-        numerator += dot(difference(plane.first, x), plane.second) * cosine;
-        denominator += cosine * cosine;
-      }
+    add_line_quadric(x, n, get(planes_, a), numerator, denominator);
+    add_line_quadric(x, n, get(planes_, c), numerator, denominator);
     const double lambda = numerator / denominator;
     return {{x[0] + lambda * n[0], x[1] + lambda * n[1], x[2] + lambda * n[2]}};
   }

@@ -224,20 +224,26 @@ private:
   int planes_ = 0;
 };
 
+/// Adds the planes' terms of the paper's line-restricted quadric (see
+/// `line_minimiser`): lambda = numerator / denominator once all planes are in.
+template <class PlaneRange>
+void add_line_quadric(const Vec3& x, const Vec3& n, const PlaneRange& planes, double& numerator,
+                      double& denominator)
+{
+  for(const auto& plane : planes) {
+    const double cosine = dot(n, plane.second);
+    numerator += dot(difference(plane.first, x), plane.second) * cosine;
+    denominator += cosine * cosine;
+  }
+}
+
 /// The paper's projection: the minimiser of sum <p_i - (x + lambda n), n_i>^2 +
 /// epsilon lambda^2 over lambda, for a unit direction n. Returns lambda.
 template <class PlaneRange>
 double line_minimiser(const Vec3& x, const Vec3& n, const PlaneRange& planes, double epsilon)
 {
   double numerator = 0, denominator = epsilon;
-  for(const auto& plane : planes) {
-    const Vec3& p = plane.first;
-    const Vec3& ni = plane.second;
-    const Vec3 d = difference(p, x);
-    const double cosine = dot(n, ni);
-    numerator += dot(d, ni) * cosine;
-    denominator += cosine * cosine;
-  }
+  add_line_quadric(x, n, planes, numerator, denominator);
   return numerator / denominator;
 }
 
