@@ -72,12 +72,7 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
       !CGAL::parameters::is_default_parameter<NamedParametersOut, CGAL::internal_np::vertex_color_map_t>::value;
   Primal primal;
   auto primal_normals = primal.add_property_map<typename Primal::Vertex_index, Vector>("v:normal").first;
-  auto primal_colors = primal.add_property_map<typename Primal::Vertex_index, std::array<double, 3>>("v:color").first;
   const auto primal_out = CGAL::parameters::vertex_normal_map(primal_normals);
-  if constexpr(wants_colors)
-    stats.primal = primal_remesh(tm, primal, np, primal_out.vertex_color_map(primal_colors));
-  else
-    stats.primal = primal_remesh(tm, primal, np, primal_out);
 
   const Out_VPM out_vpm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
                                            get_property_map(CGAL::vertex_point, quads));
@@ -88,11 +83,15 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
   const auto dual_in = parameters::dual_placement(placement, CGAL::parameters::vertex_normal_map(primal_normals));
   const auto dual_out = parameters::vertex_tangent_planes_map(
       planes, CGAL::parameters::vertex_normal_map(normals).vertex_point_map(out_vpm));
-  if constexpr(wants_colors)
+  if constexpr(wants_colors) { // the primal carries colours only when they are wanted
+    auto primal_colors = primal.add_property_map<typename Primal::Vertex_index, std::array<double, 3>>("v:color").first;
+    stats.primal = primal_remesh(tm, primal, np, primal_out.vertex_color_map(primal_colors));
     stats.dual = dualize(primal, quads, dual_in.vertex_color_map(primal_colors),
                          dual_out.vertex_color_map(get_parameter(np_out, CGAL::internal_np::vertex_color_map)));
-  else
+  } else {
+    stats.primal = primal_remesh(tm, primal, np, primal_out);
     stats.dual = dualize(primal, quads, dual_in, dual_out);
+  }
 
   if(choose_parameter(get_parameter(np, internal_np::quad_collapse), true))
     stats.collapse = collapse_quads(
