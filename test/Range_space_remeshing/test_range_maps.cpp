@@ -62,18 +62,12 @@ std::pair<double, std::size_t> median_aspect(const Mesh& remesh, int along, int 
 {
   std::vector<double> ratios;
   for(auto f : faces(remesh)) {
-    double low[3] = {1e30, 1e30, 1e30}, high[3] = {-1e30, -1e30, -1e30};
     bool inside = true;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, remesh), remesh)) {
-      const Point& p = remesh.point(v);
-      inside = inside && near(p);
-      for(int d = 0; d < 3; ++d) {
-        low[d] = std::min(low[d], p[d]);
-        high[d] = std::max(high[d], p[d]);
-      }
-    }
-    if(inside && high[across] > low[across])
-      ratios.push_back((high[along] - low[along]) / (high[across] - low[across]));
+    for(auto v : CGAL::vertices_around_face(halfedge(f, remesh), remesh))
+      inside = inside && near(remesh.point(v));
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::face_bbox(f, remesh);
+    if(inside && box.max(across) > box.min(across))
+      ratios.push_back((box.max(along) - box.min(along)) / (box.max(across) - box.min(across)));
   }
   if(ratios.empty())
     return {0, 0};
@@ -151,14 +145,9 @@ double largest_extent(const Mesh& remesh, double h)
 {
   double worst = 0;
   for(auto face : faces(remesh)) {
-    double low[3] = {1e30, 1e30, 1e30}, high[3] = {-1e30, -1e30, -1e30};
-    for(auto v : CGAL::vertices_around_face(halfedge(face, remesh), remesh))
-      for(int d = 0; d < 3; ++d) {
-        low[d] = std::min(low[d], remesh.point(v)[d]);
-        high[d] = std::max(high[d], remesh.point(v)[d]);
-      }
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::face_bbox(face, remesh);
     for(int d = 0; d < 3; ++d)
-      worst = std::max(worst, (high[d] - low[d]) / h);
+      worst = std::max(worst, (box.max(d) - box.min(d)) / h);
   }
   return worst;
 }
