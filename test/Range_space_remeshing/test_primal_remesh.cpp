@@ -230,12 +230,6 @@ void test_errors()
     x[3] = p.x() > 0.5 ? std::numeric_limits<double>::quiet_NaN() : 0.0;
   });
   CHECK(throws_remeshing_error([&] { RSR::primal_remesh(sphere, out, range_map(nan_map)); }));
-  Mesh open = sphere;
-  CGAL::Euler::remove_face(halfedge(*faces(open).begin(), open), open);
-  CHECK(throws_remeshing_error([&] { RSR::primal_remesh(open, out, params::grid_spacing(0.1)); }));
-  CHECK(throws_remeshing_error([&] {
-    RSR::primal_remesh(open, out, params::grid_spacing(0.1).seeding_method(RSR::Seeding_method::SEEDED));
-  }));
   Mesh quads;
   CGAL::make_hexahedron(Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0),
                         Point(0, 1, 1), Point(0, 0, 1), Point(1, 0, 1), Point(1, 1, 1), quads);

@@ -34,6 +34,18 @@ struct Statistics
   std::size_t output_faces = 0;
   /// faces of degree 2 merged into one edge (their two vertices get valence 3)
   std::size_t digons = 0;
+  /// faces of degree 2 between an arc and a boundary edge (the border crosses a
+  /// hyperplane and comes straight back), merged into one boundary edge: their two
+  /// boundary vertices get valence 2
+  std::size_t boundary_digons = 0;
+  /// input vertices added as boundary vertices where a border cycle crosses the grid
+  /// hyperplanes only twice (a polygon mesh cannot have a hole of two edges); they
+  /// have valence 2
+  std::size_t boundary_corners = 0;
+  /// border cycles of the input that no grid hyperplane crosses (a hole inside one
+  /// cell): the output has no boundary for them, the face of the cell covers the hole.
+  /// Counted by the complete scan only (the seeded traversal never sees them).
+  std::size_t uncrossed_border_cycles = 0;
   /// output faces whose boundary visited a vertex twice, split by a chord
   std::size_t non_simple_faces = 0;
   /// output pieces too small to form a polygon mesh (fewer than 4 vertices), dropped

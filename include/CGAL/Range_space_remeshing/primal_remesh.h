@@ -157,10 +157,9 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
                             ": the cell size is too small for this input");
     for(auto f : faces(tm))
       tracer.scan_face(f); // also checks that every face is a triangle
-    if(tracer.has_seen_border())
-      throw Remeshing_error("the input has a border: surfaces with boundary are not "
-                            "supported yet");
     stats.seeds = tracer.intersection_vertices().size();
+    if(tracer.has_seen_border())
+      stats.uncrossed_border_cycles = tracer.number_of_uncrossed_border_cycles();
   } else {
     auto seed_range = choose_parameter(get_parameter(np_in, internal_np::seed_faces),
                                        one_face_per_component(tm, face_index));
@@ -174,12 +173,13 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
 
   const auto& vertices = tracer.intersection_vertices();
   std::vector<std::uint32_t> links(4 * vertices.size());
-  std::vector<bool> positive(vertices.size());
+  std::vector<bool> positive(vertices.size()), boundary(vertices.size());
   for(std::size_t v = 0; v < vertices.size(); ++v) {
     std::copy(vertices[v].link.begin(), vertices[v].link.end(), links.begin() + 4 * v);
     positive[v] = vertices[v].orientation > 0;
+    boundary[v] = vertices[v].is_boundary();
   }
-  const Primal_complex complex(links, positive);
+  const Primal_complex complex(links, positive, boundary);
   stats.time_faces_ms = milliseconds_since(start);
   inspect(tracer, complex);
 
@@ -191,6 +191,8 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
   stats.tracing_steps = tracer.number_of_tracing_steps();
   stats.intersection_vertices = vertices.size();
   stats.digons = complex.number_of_digons();
+  stats.boundary_digons = complex.number_of_boundary_digons();
+  stats.boundary_corners = tracer.number_of_corners();
   stats.non_simple_faces = complex.number_of_non_simple_faces();
   stats.dropped_pieces = complex.number_of_dropped_pieces();
   stats.time_total_ms =

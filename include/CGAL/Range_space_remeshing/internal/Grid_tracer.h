@@ -14,6 +14,14 @@
 // it has four arcs, stored in slots 0: +i, 1: +j, 2: -i, 3: -j, which is their
 // counter-clockwise order on the surface when the triangle's orientation projected
 // on (i, j) is positive, clockwise otherwise.
+//
+// On a surface with boundary (section 7 of the paper), an arc can also end where
+// the input border crosses its hyperplane: a boundary vertex, keyed by (triangle,
+// border edge of that triangle, hyperplane x_P = k). Its slots, in counter-clockwise
+// order: 0 the boundary edge forward along the border (the interior on its left),
+// 1 its one arc, 2 the boundary edge backward; slot 3 is unused. Where a border cycle
+// has only two crossings, an input vertex between them becomes a boundary vertex too
+// (a corner: no arc), since a polygon mesh cannot have a hole of two edges.
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
 #include <CGAL/Range_space_remeshing/internal/Perturbed_predicates.h>
@@ -30,6 +38,7 @@
 #include <limits>
 #include <memory>
 #include <string>
+#include <unordered_map>
 #include <vector>
 
 namespace CGAL {
@@ -50,12 +59,20 @@ struct Intersection_vertex
   std::int8_t i, j;        // axes of the grid edge, i < j
   std::int8_t orientation; // sign of the triangle's orientation projected on (i, j)
   bool has_cell = false;
+  std::int8_t border_edge = -1; // boundary vertex: its edge in the triangle (i = j = P)
   std::array<std::int32_t, D> cell; // lattice cell; cell[i] = k, cell[j] = m always
   std::array<std::uint32_t, 4> link = {{no_link, no_link, no_link, no_link}}; // 4*vertex+slot
 
   std::int32_t k() const { return cell[i]; }
   std::int32_t m() const { return cell[j]; }
+  bool is_boundary() const { return border_edge >= 0; }
+  /// a boundary vertex at an input vertex, added where a border cycle has only two
+  /// crossings (a polygon mesh has no hole of two edges); i = j = -1, no arc
+  bool is_corner() const { return border_edge >= 0 && i < 0; }
 };
+
+// slots of a boundary vertex
+constexpr int forward_slot = 0, boundary_arc_slot = 1, backward_slot = 2;
 
 /// std::ceil for |x| < 2^31, without a library call.
 inline std::int32_t ceil_to_int(double x)
@@ -133,6 +150,9 @@ public:
           }
         }
       }
+    for(int e = 0; e < 3; ++e)
+      if(records_[face_id].neighbour[e] == border)
+        border_crossings(face_id, e);
   }
 
   /// Expected number of intersection vertices: the number of lattice points in a
@@ -193,10 +213,48 @@ public:
       queue_.pop_front();
       if(!vertices_[v].has_cell)
         compute_cell(v);
+      if(vertices_[v].is_boundary()) {
+        if(vertices_[v].link[boundary_arc_slot] == no_link)
+          trace_and_link(v, boundary_arc_slot, create_at_arc_ends);
+        if(vertices_[v].link[forward_slot] == no_link)
+          link(v, forward_slot, neighbour_along_border(v, +1), backward_slot);
+        if(vertices_[v].link[backward_slot] == no_link)
+          link(v, backward_slot, neighbour_along_border(v, -1), forward_slot);
+        continue;
+      }
       for(int slot = 0; slot < 4; ++slot)
         if(vertices_[v].link[slot] == no_link)
           trace_and_link(v, slot, create_at_arc_ends);
     }
+    add_corners_to_two_vertex_holes();
+  }
+
+  /// Number of corners added (see `Intersection_vertex::is_corner()`).
+  std::size_t number_of_corners() const { return number_of_corners_; }
+
+  /// Number of boundary vertices found.
+  std::size_t number_of_boundary_vertices() const { return number_of_boundary_vertices_; }
+
+  /// Number of border cycles of the input that no grid hyperplane crosses: they have
+  /// no boundary vertex, so the output does not have them (a hole inside one cell
+  /// is covered by the face of that cell). Meaningful after a complete scan only.
+  std::size_t number_of_uncrossed_border_cycles()
+  {
+    std::vector<std::uint8_t> walked(3 * num_faces(tm_), 0); // by border_key()
+    std::size_t uncrossed = 0;
+    for(halfedge_descriptor b : halfedges(tm_)) {
+      if(!is_border(b, tm_) || walked[border_key(border_edge_of(opposite(b, tm_)))])
+        continue;
+      bool crossed = false;
+      for(halfedge_descriptor c : CGAL::halfedges_around_face(b, tm_)) {
+        const std::uint64_t key = border_key(border_edge_of(opposite(c, tm_)));
+        walked[key] = 1;
+        const auto found = border_crossings_.find(key);
+        crossed = crossed || (found != border_crossings_.end() && !found->second.empty());
+      }
+      uncrossed += crossed ? 0 : 1;
+    }
+    return uncrossed;
   }
 
 private:
@@ -333,10 +391,7 @@ private:
         [this](std::uint32_t id) { return key_of(vertices_[id]); }, inserted);
     if(!inserted)
       return id;
-    if(vertices_.size() >= maximum_vertices_)
-      throw Remeshing_error("the output would exceed the cap of " +
-                            std::to_string(maximum_vertices_) +
-                            " vertices: the cell size is too small for this input");
+    check_cap();
     Vertex v;
     v.face_id = face_id;
     v.i = std::int8_t(i);
@@ -350,7 +405,205 @@ private:
     return id;
   }
 
-  static Vertex_key key_of(const Vertex& v) { return {v.face_id, v.i, v.j, v.k(), v.m()}; }
+  static Vertex_key key_of(const Vertex& v)
+  {
+    if(v.is_boundary())
+      return boundary_key(v.face_id, v.border_edge, v.i, v.k());
+    return {v.face_id, v.i, v.j, v.k(), v.m()};
+  }
+
+  static Vertex_key boundary_key(std::uint32_t face_id, int e, int P, std::int32_t level)
+  {
+    return {face_id, P, -1 - e, level, 0}; // j < 0: no grid-edge vertex has it
+  }
+
+  // -------------------------------------------------------------- boundary
+  struct Border_edge
+  {
+    std::uint32_t face_id;
+    int e; // edge vertex e -> vertex e+1 of the face record, its opposite a border
+  };
+
+  static std::uint64_t border_key(const Border_edge& b) { return 3 * std::uint64_t(b.face_id) + b.e; }
+
+  halfedge_descriptor halfedge_of(const Border_edge& b) const
+  {
+    halfedge_descriptor h = halfedge(face_of_id_[b.face_id], tm_);
+    for(int e = 0; e < b.e; ++e)
+      h = next(h, tm_);
+    return h;
+  }
+
+  Border_edge border_edge_of(halfedge_descriptor h)
+  {
+    const face_descriptor f = face(h, tm_);
+    const std::uint32_t face_id = std::uint32_t(get(face_index_, f));
+    face_of_id_[face_id] = f;
+    int e = 0;
+    for(halfedge_descriptor g = halfedge(f, tm_); g != h; g = next(g, tm_))
+      ++e;
+    return {face_id, e};
+  }
+
+  /// The next border edge along the border, forward (direction > 0: the direction
+  /// of the face's edge) or backward, turning around the shared input vertex.
+  Border_edge next_border_edge(const Border_edge& b, int direction)
+  {
+    halfedge_descriptor g = halfedge_of(b);
+    if(direction > 0) {
+      g = next(g, tm_);
+      while(!is_border(opposite(g, tm_), tm_))
+        g = next(opposite(g, tm_), tm_);
+    } else {
+      g = prev(g, tm_);
+      while(!is_border(opposite(g, tm_), tm_))
+        g = prev(opposite(g, tm_), tm_);
+    }
+    return border_edge_of(g);
+  }
+
+  /// The boundary vertices of border edge e of a face, in order along the edge
+  /// (the face's counter-clockwise direction); created, and queued, on first request.
+  const std::vector<std::uint32_t>& border_crossings(std::uint32_t face_id, int e)
+  {
+    const std::uint64_t key = border_key({face_id, e});
+    const auto found = border_crossings_.find(key);
+    if(found != border_crossings_.end())
+      return found->second;
+    const Triangle t = load(face_id);
+    const Point_d &a = *t.p[e], &b = *t.p[(e + 1) % 3];
+    const Levels &ca = *t.c[e], &cb = *t.c[(e + 1) % 3];
+    std::vector<std::uint32_t> ids;
+    for(int P = 0; P < D; ++P) // levels strictly crossed, as in scan_face()
+      for(std::int32_t level = (std::min)(ca[P], cb[P]); level < (std::max)(ca[P], cb[P]); ++level)
+        ids.push_back(create_boundary_vertex(face_id, e, P, level, a, b));
+    std::sort(ids.begin(), ids.end(), [&](std::uint32_t x, std::uint32_t y) {
+      return comes_first_along_edge(a, b, vertices_[x], vertices_[y]);
+    });
+    return border_crossings_.emplace(key, std::move(ids)).first->second;
+  }
+
+  /// Of two crossings of edge ab with hyperplanes, is x met first going from a to b?
+  bool comes_first_along_edge(const Point_d& a, const Point_d& b, const Vertex& x, const Vertex& y) const
+  {
+    if(x.i == y.i)
+      return (x.k() < y.k()) == (a[x.i] < b[x.i]);
+    // side of x's crossing point relative to y's hyperplane, against the direction
+    // in which the edge crosses that hyperplane
+    const int side_of_x = predicates_.crossing_side(a, b, x.i, double(x.k()), y.i, double(y.k()));
+    return side_of_x != (a[y.i] < b[y.i] ? 1 : -1);
+  }
+
+  std::uint32_t create_boundary_vertex(std::uint32_t face_id, int e, int P, std::int32_t level,
+                                       const Point_d& a, const Point_d& b)
+  {
+    bool inserted = false;
+    const std::uint32_t id = table_.find_or_insert(
+        boundary_key(face_id, e, P, level), std::uint32_t(vertices_.size()),
+        [this](std::uint32_t id) { return key_of(vertices_[id]); }, inserted);
+    CGAL_assertion(inserted);
+    check_cap();
+    Vertex v;
+    v.face_id = face_id;
+    v.i = v.j = std::int8_t(P);
+    v.border_edge = std::int8_t(e);
+    v.orientation = 1; // slots 0, 1, 2 counter-clockwise
+    v.cell[P] = level;
+    // the cell in the other axes: floor of the crossing point's coordinates, exactly
+    const double t = Predicates::crossing_parameter(a, b, P, double(level));
+    for(int q = 0; q < D; ++q) {
+      if(q == P)
+        continue;
+      const double guess = a[q] + t * (b[q] - a[q]);
+      std::int32_t n = std::int32_t(std::floor((std::min)((std::max)(guess, (std::min)(a[q], b[q])),
+                                                           (std::max)(a[q], b[q]))));
+      while(predicates_.crossing_side(a, b, P, double(level), q, double(n)) < 0) --n;
+      while(predicates_.crossing_side(a, b, P, double(level), q, double(n + 1)) > 0) ++n;
+      v.cell[q] = n;
+    }
+    v.has_cell = true;
+    vertices_.push_back(v);
+    queue_.push_back(id);
+    ++number_of_boundary_vertices_;
+    return id;
+  }
+
+  /// The boundary vertex next to v along the input border (direction +1: forward).
+  std::uint32_t neighbour_along_border(std::uint32_t v, int direction)
+  {
+    Border_edge b{vertices_[v].face_id, vertices_[v].border_edge};
+    const std::vector<std::uint32_t>& here = border_crossings(b.face_id, b.e);
+    const std::size_t at = std::size_t(std::find(here.begin(), here.end(), v) - here.begin());
+    CGAL_assertion(at < here.size());
+    if(direction > 0 && at + 1 < here.size())
+      return here[at + 1];
+    if(direction < 0 && at > 0)
+      return here[at - 1];
+    // the border cycle holds v, so the walk ends at the latest back on v's edge
+    for(std::size_t step = 0; step <= 3 * num_faces(tm_); ++step) {
+      b = next_border_edge(b, direction);
+      const std::vector<std::uint32_t>& crossings = border_crossings(b.face_id, b.e);
+      if(!crossings.empty())
+        return direction > 0 ? crossings.front() : crossings.back();
+    }
+    throw std::logic_error("Range_space_remeshing: endless border (internal error)");
+  }
+
+  /// Where a border cycle has two boundary vertices a, b only, inserts after a the
+  /// input vertex that ends a's border edge, taking a whose forward neighbour b is
+  /// not further along the same edge: that vertex is then between a and b.
+  void add_corners_to_two_vertex_holes()
+  {
+    const std::size_t n = vertices_.size();
+    for(std::uint32_t a = 0; a < n; ++a) {
+      if(!vertices_[a].is_boundary())
+        continue;
+      const std::uint32_t b = vertices_[a].link[forward_slot] / 4;
+      if(b < a || vertices_[b].link[forward_slot] / 4 != a)
+        continue; // not a cycle of two, or seen from b already
+      const auto& crossings = border_crossings(vertices_[a].face_id, vertices_[a].border_edge);
+      const bool b_after_a_on_its_edge =
+          std::find(std::find(crossings.begin(), crossings.end(), a), crossings.end(), b) != crossings.end();
+      insert_corner_after(b_after_a_on_its_edge ? b : a);
+    }
+  }
+
+  void insert_corner_after(std::uint32_t a)
+  {
+    const std::uint32_t b = vertices_[a].link[forward_slot] / 4;
+    Vertex c;
+    c.face_id = vertices_[a].face_id;
+    c.border_edge = vertices_[a].border_edge;
+    c.i = c.j = -1;
+    c.orientation = 1;
+    const std::size_t input_vertex = u(record(c.face_id).vertex[(c.border_edge + 1) % 3]);
+    const Levels& ceiling = mapped_vertices_[input_vertex].ceiling;
+    for(int q = 0; q < D; ++q)
+      c.cell[q] = ceiling[q] - 1; // a coordinate on a level counts as below it
+    c.has_cell = true;
+    const std::uint32_t id = std::uint32_t(vertices_.size());
+    vertices_.push_back(c);
+    vertices_[a].link[forward_slot] = vertices_[b].link[backward_slot] = no_link;
+    link(a, forward_slot, id, backward_slot);
+    link(id, forward_slot, b, backward_slot);
+    ++number_of_corners_;
+  }
+
+  void link(std::uint32_t v, int slot, std::uint32_t w, int w_slot)
+  {
+    if(vertices_[w].link[w_slot] != no_link)
+      throw std::logic_error("Range_space_remeshing: inconsistent boundary (internal error)");
+    vertices_[v].link[slot] = 4 * w + std::uint32_t(w_slot);
+    vertices_[w].link[w_slot] = 4 * v + std::uint32_t(slot);
+  }
+
+  void check_cap() const
+  {
+    if(vertices_.size() >= maximum_vertices_)
+      throw Remeshing_error("the output would exceed the cap of " +
+                            std::to_string(maximum_vertices_) +
+                            " vertices: the cell size is too small for this input");
+  }
 
   /// The lattice cell of the vertex in the axes other than its grid edge's:
   /// floor of its coordinates, decided by exact perturbed predicates.
@@ -387,32 +640,33 @@ private:
     std::uint32_t end;
     int end_slot;
     trace_arc(v, slot, create_at_arc_ends, end, end_slot);
-    Vertex& w = vertices_[end];
-    if(w.link[end_slot] != no_link)
-      throw std::logic_error("Range_space_remeshing: inconsistent arc (internal error)");
-    vertices_[v].link[slot] = 4 * end + std::uint32_t(end_slot);
-    w.link[end_slot] = 4 * v + std::uint32_t(slot);
+    link(v, slot, end, end_slot);
   }
 
   void trace_arc(std::uint32_t start, int slot, bool create_at_arc_ends,
                  std::uint32_t& end, int& end_slot)
   {
     const Vertex v = vertices_[start]; // copy: vertices_ may grow below
-    // Plane of the arc x_P = level, travel axis T, direction dir.
+    // Plane of the arc x_P = level; travel axis T and direction dir (none for an arc
+    // leaving the border: it starts strictly inside its box).
+    const bool from_border = v.is_boundary();
     const bool along_i = (slot % 2 == 0);
-    const int P = along_i ? v.j : v.i;
-    const int T = along_i ? v.i : v.j;
+    const int P = from_border ? v.i : (along_i ? v.j : v.i);
+    const int T = from_border ? -1 : (along_i ? v.i : v.j);
     const int dir = slot < 2 ? 1 : -1;
     const std::int32_t level = v.cell[P];
-    // sigma: +1 when the side u_P > level lies left of the travel direction.
-    const int sigma = (slot == 0 || slot == 3) ? v.orientation : -v.orientation;
+    // sigma: +1 when the side u_P > level lies left of the travel direction. An arc
+    // from the border enters its triangle through the border edge e, so that edge
+    // goes from the side +sigma to -sigma.
+    const int sigma = from_border ? ((*load(v.face_id).c[v.border_edge])[P] > level ? 1 : -1)
+                                  : ((slot == 0 || slot == 3) ? v.orientation : -v.orientation);
 
     std::array<std::int32_t, D> lo, hi;
     for(int q = 0; q < D; ++q) {
       lo[q] = v.cell[q];
       hi[q] = v.cell[q] + 1;
     }
-    if(dir < 0) {
+    if(!from_border && dir < 0) {
       lo[T] = v.cell[T] - 1;
       hi[T] = v.cell[T];
     }
@@ -452,11 +706,27 @@ private:
         finish_arc(t, P, level, first, lo, create_at_arc_ends, end, end_slot);
         return;
       }
+      if(records_[f].neighbour[e] == border) {
+        finish_arc_at_border(t, e, P, level, lo, end, end_slot);
+        return;
+      }
       f = records_[f].neighbour[e];
-      if(f == border)
-        throw Remeshing_error("the input has a border: surfaces with boundary are not "
-                              "supported yet");
     }
+  }
+
+  /// The arc leaves the surface through border edge e of t, inside its box.
+  void finish_arc_at_border(const Triangle& t, int e, int P, std::int32_t level,
+                            const std::array<std::int32_t, D>& lo, std::uint32_t& end, int& end_slot)
+  {
+    border_crossings(t.face_id, e); // creates the edge's boundary vertices if need be
+    end = table_.find(boundary_key(t.face_id, e, P, level),
+                      [this](std::uint32_t id) { return key_of(vertices_[id]); });
+    if(end == no_link)
+      throw std::logic_error("Range_space_remeshing: arc ends at no boundary vertex (internal error)");
+    end_slot = boundary_arc_slot;
+    CGAL_assertion_code(const Vertex& ev = vertices_[end];)
+    CGAL_assertion_code(for(int q = 0; q < D; ++q))
+    CGAL_assertion(q == P || ev.cell[q] == lo[q]);
   }
 
   /// The ccw edge of `t` through which an arc in x_P = level leaves, given sigma.
@@ -651,6 +921,19 @@ public:
   {
     const Triangle t = load(v.face_id);
     std::array<double, 3> w;
+    if(v.is_corner()) {
+      w = {{0, 0, 0}};
+      w[(v.border_edge + 1) % 3] = 1;
+      return w;
+    }
+    if(v.is_boundary()) { // on the border edge e, where it crosses x_P = k
+      const int e = v.border_edge;
+      const double s = Predicates::crossing_parameter(*t.p[e], *t.p[(e + 1) % 3], v.i, double(v.k()));
+      w = {{0, 0, 0}};
+      w[e] = 1 - (std::min)((std::max)(s, 0.), 1.);
+      w[(e + 1) % 3] = 1 - w[e];
+      return w;
+    }
     if(solve_barycentric(t, v.i, v.j, double(v.k()), double(v.m()), w))
       return w;
     return v.has_cell ? barycentric_in_cell(t, v) : barycentric(t, v.i, v.j, double(v.k()), double(v.m()));
@@ -684,6 +967,9 @@ private:
   std::vector<std::uint8_t> recorded_;
   std::size_t number_of_visited_faces_ = 0;
   bool seen_border_ = false;
+  std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> border_crossings_; // by border_key()
+  std::size_t number_of_boundary_vertices_ = 0;
+  std::size_t number_of_corners_ = 0;
   std::vector<std::uint8_t> seed_marks_;
   std::size_t tracing_steps_ = 0;
 

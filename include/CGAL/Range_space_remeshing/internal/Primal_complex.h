@@ -14,6 +14,11 @@
 // an orbit of next(h) = the outgoing halfedge at target(h) just before twin(h) in
 // counter-clockwise order; faces then have the input's orientation.
 //
+// A boundary vertex (where an arc meets the input border) has three slots, counter-
+// clockwise: 0 the boundary edge forward, 1 its arc, 2 the boundary edge backward.
+// The orbits of the backward boundary halfedges are the holes: their halfedges are
+// the border halfedges of the output (no face).
+//
 // Faces a polygon mesh cannot hold are repaired, and counted:
 // * a digon (two vertices joined by two arcs around one face) has its two arcs
 //   merged into one edge; the two vertices get valence 3, V - E + F is unchanged;
@@ -41,9 +46,11 @@ public:
   };
 
   /// `links[4*v+s]` is the twin of halfedge 4*v+s, `positive[v]` the sign of the
-  /// projected orientation of vertex v.
-  Primal_complex(const std::vector<std::uint32_t>& links, const std::vector<bool>& positive)
-    : number_of_vertices_(std::uint32_t(positive.size()))
+  /// projected orientation of vertex v, `boundary[v]` whether it is a boundary vertex
+  /// (then slot 3 is unused, and slot 1 too at a corner: links of unused slots are `none`).
+  Primal_complex(const std::vector<std::uint32_t>& links, const std::vector<bool>& positive,
+                 const std::vector<bool>& boundary)
+    : number_of_vertices_(std::uint32_t(positive.size())), boundary_(boundary)
   {
     build_rotation(links, positive);
     trace_faces();
@@ -60,7 +67,12 @@ public:
   /// whether vertex v is part of the output
   bool is_kept(std::uint32_t v) const { return kept_vertex_[v]; }
 
+  /// digons merged away from the boundary (their vertices have valence 3)
   std::size_t number_of_digons() const { return digons_; }
+  /// digons of an arc and a boundary edge (a corner of the surface that crosses a
+  /// hyperplane and comes back), merged: their two boundary vertices have valence 2
+  std::size_t number_of_boundary_digons() const { return boundary_digons_; }
+  bool is_boundary(std::uint32_t v) const { return boundary_[v]; }
   std::size_t number_of_non_simple_faces() const { return non_simple_faces_; }
   std::size_t number_of_dropped_pieces() const { return dropped_pieces_; }
 
@@ -82,7 +94,14 @@ private:
         ccw_next_[4 * v + s] = positive[v] ? forward : backward;
         ccw_prev_[4 * v + s] = positive[v] ? backward : forward;
       }
+    for(std::uint32_t v = 0; v < number_of_vertices_; ++v)
+      if(boundary_[v])
+        for(std::uint32_t s : {1, 3})
+          if(links[4 * v + s] == none) // slot 3, and the arc slot of a corner
+            remove_from_rotation(4 * v + s);
   }
+
+  bool is_hole_halfedge(std::uint32_t h) const { return boundary_[h / 4] && h % 4 == 2; }
 
   std::uint32_t face_next(std::uint32_t h) const { return ccw_prev_[twin_[h]]; }
 
@@ -90,10 +109,11 @@ private:
   {
     face_of_.assign(twin_.size(), none);
     for(std::uint32_t h = 0; h < twin_.size(); ++h) {
-      if(face_of_[h] != none)
+      if(face_of_[h] != none || !alive_[h])
         continue;
       const std::uint32_t f = std::uint32_t(orbit_start_.size());
       orbit_start_.push_back(h);
+      is_hole_.push_back(is_hole_halfedge(h));
       std::uint32_t degree = 0;
       for(std::uint32_t g = h; face_of_[g] == none; g = face_next(g)) {
         face_of_[g] = f;
@@ -113,7 +133,7 @@ private:
   void merge_digons()
   {
     for(std::uint32_t f = 0; f < orbit_start_.size(); ++f) {
-      if(orbit_degree_[f] != 2)
+      if(orbit_degree_[f] != 2 || is_hole_[f])
         continue;
       const std::uint32_t h1 = orbit_start_[f], h2 = face_next(h1);
       const std::uint32_t t1 = twin_[h1], t2 = twin_[h2];
@@ -126,7 +146,7 @@ private:
       remove_from_rotation(h1);
       remove_from_rotation(h2);
       orbit_degree_[f] = 0;
-      digon_vertices_.push_back(h1 / 4);
+      (boundary_[h1 / 4] ? boundary_digon_vertices_ : digon_vertices_).push_back(h1 / 4);
     }
   }
 
@@ -146,6 +166,8 @@ private:
       Halfedge& he = halfedges_[new_id[h]];
       he.twin = new_id[twin_[h]];
       he.next = new_id[face_next(h)];
+      if(is_hole_[face_of_[h]])
+        continue; // a border halfedge: no face
       std::uint32_t& f = face_id[face_of_[h]];
       if(f == none) {
         f = std::uint32_t(face_halfedge_.size());
@@ -154,7 +176,7 @@ private:
       he.face = f;
     }
     // the rotation system is no longer needed
-    twin_ = {}; ccw_next_ = {}; ccw_prev_ = {}; alive_ = {}; face_of_ = {};
+    twin_ = {}; ccw_next_ = {}; ccw_prev_ = {}; alive_ = {}; face_of_ = {}; is_hole_ = {};
   }
 
   std::uint32_t source(std::uint32_t h) const { return halfedges_[halfedges_[h].twin].target; }
@@ -277,24 +299,28 @@ private:
     // report only the repairs that are in the output
     digons_ = std::count_if(digon_vertices_.begin(), digon_vertices_.end(),
                             [this](std::uint32_t v) { return bool(kept_vertex_[v]); });
+    boundary_digons_ = std::count_if(boundary_digon_vertices_.begin(), boundary_digon_vertices_.end(),
+                                     [this](std::uint32_t v) { return bool(kept_vertex_[v]); });
     non_simple_faces_ = std::count_if(split_vertices_.begin(), split_vertices_.end(),
                                       [this](std::uint32_t v) { return bool(kept_vertex_[v]); });
   }
 
   std::uint32_t number_of_vertices_;
+  std::vector<bool> boundary_;
   // rotation system
   std::vector<std::uint32_t> twin_, ccw_next_, ccw_prev_;
   std::vector<std::uint8_t> alive_;
   std::vector<std::uint32_t> face_of_, orbit_start_, orbit_degree_;
+  std::vector<bool> is_hole_; // per orbit
   // explicit halfedges
   std::vector<Halfedge> halfedges_;
   std::vector<std::uint32_t> face_halfedge_;
   std::vector<bool> kept_vertex_;
   std::vector<std::uint32_t> last_visit_, cycle_; // scratch of split_at_pinch()
   std::vector<std::uint32_t> unsplittable_faces_;
-  std::vector<std::uint32_t> digon_vertices_, split_vertices_; // one vertex of each repair
+  std::vector<std::uint32_t> digon_vertices_, boundary_digon_vertices_, split_vertices_; // one vertex of each repair
 
-  std::size_t digons_ = 0, non_simple_faces_ = 0, dropped_pieces_ = 0;
+  std::size_t digons_ = 0, boundary_digons_ = 0, non_simple_faces_ = 0, dropped_pieces_ = 0;
 };
 
 } // namespace internal

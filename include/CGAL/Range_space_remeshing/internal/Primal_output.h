@@ -190,6 +190,17 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
     } while(h != first);
     ++number_of_faces;
   }
+  // border halfedges last, so that a boundary vertex's halfedge is its border one
+  for(std::uint32_t h = 0; h < halfedges.size(); ++h) {
+    if(halfedges[h].face != none || !complex.is_kept(halfedges[h].target))
+      continue;
+    const out_halfedge oh = halfedge_of[h];
+    const out_vertex t = vertex_of[halfedges[h].target];
+    set_face(oh, boost::graph_traits<PolygonMesh>::null_face(), out);
+    set_target(oh, t, out);
+    set_next(oh, halfedge_of[halfedges[h].next], out);
+    set_halfedge(t, oh, out);
+  }
   stats.output_vertices = number_of_vertices;
   stats.output_edges = number_of_edges;
   stats.output_faces = number_of_faces;

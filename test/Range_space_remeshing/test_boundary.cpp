@@ -1,0 +1,256 @@
+// Surfaces with boundary (section 7 of the paper): meshes generated in code (disk,
+// open cylinder, planar squares, a single triangle, a strip) and CGAL's open meshes,
+// through the primal remesh and the dual pipeline.
+// Usage: test_boundary [directory of CGAL's sample meshes]
+#include "test_support.h"
+
+#include <CGAL/Range_space_remeshing/remesh.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <algorithm>
+#include <limits>
+
+using namespace test;
+namespace params = CGAL::parameters;
+
+// ------------------------------------------------------------------ open meshes
+
+/// Builds a mesh from a grid of (rows + 1) x (columns + 1) points, each cell split
+/// in two triangles; `wrap` joins the last column to the first (a cylinder).
+template <class Position>
+Mesh make_grid_mesh(int rows, int columns, bool wrap, Position position)
+{
+  Mesh m;
+  const int stored_columns = wrap ? columns : columns + 1;
+  std::vector<Mesh::Vertex_index> v;
+  for(int r = 0; r <= rows; ++r)
+    for(int c = 0; c < stored_columns; ++c)
+      v.push_back(m.add_vertex(position(r, c)));
+  auto at = [&](int r, int c) { return v[r * stored_columns + (c % stored_columns)]; };
+  for(int r = 0; r < rows; ++r)
+    for(int c = 0; c < columns; ++c) {
+      m.add_face(at(r, c), at(r, c + 1), at(r + 1, c + 1));
+      m.add_face(at(r, c), at(r + 1, c + 1), at(r + 1, c));
+    }
+  return m;
+}
+
+/// Square [0, size]^2 x {z}, n x n cells.
+Mesh make_square(int n, double size, double z)
+{
+  return make_grid_mesh(n, n, false, [&](int r, int c) { return Point(size * c / n, size * r / n, z); });
+}
+
+/// Open cylinder of radius r and height `height` around the z axis, tilted so that
+/// its two border circles cross the grid planes in general position.
+Mesh make_open_cylinder(double radius, double height, int around, int along)
+{
+  return make_grid_mesh(along, around, true, [&](int r, int c) {
+    const double a = 2 * CGAL_PI * c / around, z = height * r / along - height / 2;
+    const double x = radius * std::cos(a), y = radius * std::sin(a);
+    return Point(x, 0.96 * y - 0.28 * z, 0.28 * y + 0.96 * z);
+  });
+}
+
+/// Disk of radius r: a centre and rings of triangles, slightly domed.
+Mesh make_disk(double radius, int rings, int sectors)
+{
+  Mesh m;
+  const auto centre = m.add_vertex(Point(0, 0, 0.1 * radius));
+  std::vector<std::vector<Mesh::Vertex_index>> ring(rings + 1);
+  for(int r = 1; r <= rings; ++r)
+    for(int s = 0; s < sectors; ++s) {
+      const double rho = radius * r / rings, a = 2 * CGAL_PI * (s + 0.5 * r) / sectors;
+      const double z = 0.1 * radius * (1 - (rho / radius) * (rho / radius));
+      ring[r].push_back(m.add_vertex(Point(rho * std::cos(a), rho * std::sin(a), z)));
+    }
+  for(int s = 0; s < sectors; ++s)
+    m.add_face(centre, ring[1][s], ring[1][(s + 1) % sectors]);
+  for(int r = 1; r < rings; ++r)
+    for(int s = 0; s < sectors; ++s) {
+      const int t = (s + 1) % sectors;
+      m.add_face(ring[r][s], ring[r + 1][s], ring[r + 1][t]);
+      m.add_face(ring[r][s], ring[r + 1][t], ring[r][t]);
+    }
+  return m;
+}
+
+// ------------------------------------------------------------------ border distance
+
+using Segment = std::pair<Point, Point>;
+
+std::vector<Segment> border_segments(const Mesh& m)
+{
+  std::vector<Segment> segments;
+  for(auto h : halfedges(m))
+    if(is_border(h, m))
+      segments.emplace_back(m.point(source(h, m)), m.point(target(h, m)));
+  return segments;
+}
+
+double distance_to_segments(const Point& p, const std::vector<Segment>& segments)
+{
+  double best = std::numeric_limits<double>::infinity();
+  for(const Segment& s : segments)
+    best = std::min(best, CGAL::squared_distance(p, K::Segment_3(s.first, s.second)));
+  return std::sqrt(best);
+}
+
+/// Two-sided Hausdorff distance between the border polylines of two meshes,
+/// sampled at 16 points per edge.
+double border_hausdorff(const Mesh& a, const Mesh& b)
+{
+  const auto sa = border_segments(a), sb = border_segments(b);
+  double d = 0;
+  for(const auto& [from, to] : {std::make_pair(&sa, &sb), std::make_pair(&sb, &sa)})
+    for(const Segment& s : *from)
+      for(int i = 0; i <= 16; ++i)
+        d = std::max(d, distance_to_segments(s.first + (s.second - s.first) * (i / 16.), *to));
+  return d;
+}
+
+// ------------------------------------------------------------------ primal
+
+struct Open_case
+{
+  std::string name;
+  Mesh mesh;
+  double h;
+};
+
+/// Primal remesh: invariants, border cycles, and the output border within a cell
+/// diagonal of the input border (each output border edge is a chord of the input
+/// border between two consecutive crossings, so both lie in one cell).
+void check_primal(const Open_case& c, RSR::Seeding_method seeding)
+{
+  Mesh out;
+  const auto stats = remesh_and_check(c.mesh, out, params::grid_spacing(c.h).seeding_method(seeding));
+  const double hausdorff = border_hausdorff(c.mesh, out) / c.h;
+  std::cout << c.name << (seeding == RSR::Seeding_method::SEEDED ? " (seeded)" : "") << " h=" << c.h
+            << ": " << num_vertices(out) << " vertices, " << num_faces(out) << " faces, "
+            << number_of_border_cycles(out) << " border cycles (input "
+            << number_of_border_cycles(c.mesh) << ", uncrossed " << stats.uncrossed_border_cycles
+            << "), digons " << stats.digons << " + " << stats.boundary_digons
+            << " on the border, corners " << stats.boundary_corners << ", border Hausdorff "
+            << hausdorff << " h" << std::endl;
+  CHECK(num_faces(out) > 0);
+  CHECK_EQ(stats.dropped_pieces, std::size_t(0));
+  // each hole inside one cell is covered by a face
+  CHECK_EQ(number_of_border_cycles(out), number_of_border_cycles(c.mesh) - stats.uncrossed_border_cycles);
+  CHECK_EQ(euler_characteristic(out), euler_characteristic(c.mesh) + long(stats.uncrossed_border_cycles));
+  CHECK(hausdorff <= std::sqrt(3.));
+}
+
+std::vector<Open_case> generated_cases()
+{
+  std::vector<Open_case> cases;
+  cases.push_back({"disk", make_disk(1.0, 30, 90), 0.1});
+  cases.push_back({"open cylinder", make_open_cylinder(0.5, 2.0, 90, 60), 0.1});
+  cases.push_back({"square off the lattice", make_square(17, 1.0, 0.013), 0.07});
+  // every vertex on grid planes: x and y multiples of h, z = 0 exactly
+  cases.push_back({"square in a grid plane", make_square(10, 1.0, 0.0), 0.1});
+  cases.push_back({"coarse square, fine grid", make_square(1, 1.0, 0.3), 0.05});
+  return cases;
+}
+
+void test_generated(RSR::Seeding_method seeding)
+{
+  for(const Open_case& c : generated_cases())
+    check_primal(c, seeding);
+}
+
+/// A single triangle and a one-triangle-wide strip are all border: arcs go from
+/// border to border, faces may have no interior vertex at all.
+void test_all_border()
+{
+  Mesh triangle;
+  triangle.add_face(triangle.add_vertex(Point(0, 0, 0)), triangle.add_vertex(Point(1, 0.1, 0.2)),
+                    triangle.add_vertex(Point(0.3, 0.9, 0.5)));
+  Mesh strip = make_grid_mesh(1, 40, false, [](int r, int c) { return Point(0.05 * c, 0.03 * r, 0.01 * c); });
+  for(const Mesh* m : {&triangle, &strip})
+    for(auto seeding : {RSR::Seeding_method::COMPLETE_SCAN, RSR::Seeding_method::SEEDED}) {
+      Mesh out;
+      const auto stats = remesh_and_check(*m, out, params::grid_spacing(0.1).seeding_method(seeding));
+      std::cout << "all border: " << num_faces(*m) << " triangles -> " << num_vertices(out)
+                << " vertices, " << num_faces(out) << " faces" << std::endl;
+      CHECK(num_faces(out) > 1);
+      CHECK_EQ(number_of_border_cycles(out), std::size_t(1));
+      CHECK_EQ(euler_characteristic(out), 1L);
+      CHECK_EQ(stats.uncrossed_border_cycles, std::size_t(0));
+    }
+}
+
+/// A small disk that one hyperplane crosses: two boundary vertices joined by an arc
+/// and by two boundary edges. The output is one triangle: the input vertex where
+/// the border turns becomes a corner, and the digon on the other side is merged.
+void test_disk_crossed_once()
+{
+  Mesh disk = make_disk(0.2, 4, 12);
+  for(auto v : vertices(disk))
+    disk.point(v) = disk.point(v) + K::Vector_3(0.03, 0.5, 0.5); // only x = 0 crosses it
+  for(auto seeding : {RSR::Seeding_method::COMPLETE_SCAN, RSR::Seeding_method::SEEDED}) {
+    Mesh out;
+    const auto stats = remesh_and_check(disk, out, params::grid_spacing(1.0).seeding_method(seeding));
+    CHECK_EQ(stats.boundary_corners, std::size_t(1));
+    CHECK_EQ(stats.boundary_digons, std::size_t(1));
+    CHECK_EQ(num_faces(out), std::size_t(1));
+    CHECK_EQ(num_vertices(out), std::size_t(3));
+    CHECK_EQ(number_of_border_cycles(out), std::size_t(1));
+  }
+}
+
+/// A hole inside one cell has no boundary vertex: the output covers it, and the
+/// complete scan says so.
+void test_uncrossed_hole()
+{
+  Mesh m = make_square(10, 1.0, 0.01);
+  // remove the two triangles of [0.4, 0.5]^2: a hole inside the grid cell [0.3, 0.6]^2
+  std::vector<Mesh::Face_index> doomed;
+  for(auto f : faces(m)) {
+    const auto c = CGAL::Polygon_mesh_processing::face_bbox(f, m);
+    if(c.xmin() > 0.39 && c.xmax() < 0.51 && c.ymin() > 0.39 && c.ymax() < 0.51)
+      doomed.push_back(f);
+  }
+  CHECK_EQ(doomed.size(), std::size_t(2));
+  for(auto f : doomed)
+    CGAL::Euler::remove_face(halfedge(f, m), m);
+  m.collect_garbage();
+  CHECK_EQ(number_of_border_cycles(m), std::size_t(2));
+  Mesh out;
+  // cells of 0.3 with the origin at 0: [0.3, 0.6] holds the hole
+  const auto stats = remesh_and_check(m, out, params::grid_spacing(0.3));
+  CHECK_EQ(stats.uncrossed_border_cycles, std::size_t(1));
+  CHECK_EQ(number_of_border_cycles(out), std::size_t(1));
+  // at a finer grid, a hyperplane crosses the hole: it is kept
+  Mesh fine;
+  const auto fine_stats = remesh_and_check(m, fine, params::grid_spacing(0.045));
+  CHECK_EQ(fine_stats.uncrossed_border_cycles, std::size_t(0));
+  CHECK_EQ(number_of_border_cycles(fine), std::size_t(2));
+}
+
+void test_cgal_meshes(const std::string& directory)
+{
+  for(const std::string name : {"elephant-with-holes", "mech-holes-shark"}) {
+    Mesh m;
+    if(!CGAL::IO::read_polygon_mesh(directory + "/" + name + ".off", m)) {
+      std::cerr << "cannot read " << name << std::endl;
+      ++failures;
+      continue;
+    }
+    for(double fraction : {0.02, 0.01})
+      check_primal({name, m, fraction * bbox_diagonal(m)}, RSR::Seeding_method::COMPLETE_SCAN);
+  }
+}
+
+int main(int argc, char** argv)
+{
+  test_generated(RSR::Seeding_method::COMPLETE_SCAN);
+  test_generated(RSR::Seeding_method::SEEDED);
+  test_all_border();
+  test_disk_crossed_once();
+  test_uncrossed_hole();
+  if(argc > 1)
+    test_cgal_meshes(argv[1]);
+  return report("test_boundary");
+}
