@@ -407,8 +407,6 @@ Mesh read_input(const std::string& path, bool& triangulated)
     if(!all_triangulated)
       fan_triangulate(mesh);
   }
-  if(!CGAL::is_closed(mesh))
-    fail("'" + path + "' has a border: surfaces with boundary are not supported yet");
   return mesh;
 }
 
@@ -467,6 +465,20 @@ std::size_t components(const Mesh& mesh)
   std::vector<std::size_t> ids(num_faces(mesh));
   return PMP::connected_components(
       mesh, CGAL::make_property_map(ids));
+}
+
+std::size_t border_cycles(const Mesh& mesh)
+{
+  std::vector<bool> seen(mesh.number_of_halfedges(), false);
+  std::size_t cycles = 0;
+  for(auto h : halfedges(mesh)) {
+    if(!is_border(h, mesh) || seen[h.idx()])
+      continue;
+    ++cycles;
+    for(auto g : CGAL::halfedges_around_face(h, mesh))
+      seen[g.idx()] = true;
+  }
+  return cycles;
 }
 
 /// The primal remesh, or the whole dual pipeline, with the named parameters `np`
@@ -619,6 +631,11 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
        << ", \"intersection_vertices\": " << s.intersection_vertices
        << ", \"digons\": " << s.digons << ", \"non_simple_faces\": " << s.non_simple_faces
        << ", \"dropped_pieces\": " << s.dropped_pieces
+       << ", \"input_border_cycles\": " << border_cycles(input)
+       << ", \"output_border_cycles\": " << border_cycles(output)
+       << ", \"boundary_digons\": " << s.boundary_digons
+       << ", \"boundary_corners\": " << s.boundary_corners
+       << ", \"uncrossed_border_cycles\": " << s.uncrossed_border_cycles
        << ", \"quads\": " << quads << ", \"non_quads\": " << num_faces(output) - quads
        << ", \"joined_triangle_pairs\": " << all.dual.joined_triangle_pairs
        << ", \"dual_dropped_pieces\": " << all.dual.dropped_pieces

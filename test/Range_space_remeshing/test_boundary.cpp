@@ -142,6 +142,80 @@ void check_primal(const Open_case& c, RSR::Seeding_method seeding)
   CHECK(hausdorff <= std::sqrt(3.));
 }
 
+// ------------------------------------------------------------------ dual pipeline
+
+using Vector = K::Vector_3;
+
+std::vector<Point> border_points(const Mesh& m)
+{
+  std::vector<Point> points;
+  for(auto v : vertices(m))
+    if(CGAL::is_border(v, m))
+      points.push_back(m.point(v));
+  std::sort(points.begin(), points.end());
+  return points;
+}
+
+std::size_t non_quads(const Mesh& m)
+{
+  std::size_t n = 0;
+  for(auto f : faces(m))
+    n += degree(f, m) != 4;
+  return n;
+}
+
+/// Dual, collapse, relaxation: all quads, the input's border cycles, border vertices
+/// never moved by the collapse, and the border kept within a cell of the input's.
+void check_dual_pipeline(const Open_case& c)
+{
+  Mesh primal;
+  auto normals = primal.add_property_map<Mesh::Vertex_index, Vector>("v:normal").first;
+  const auto primal_stats = RSR::primal_remesh(c.mesh, primal, params::grid_spacing(c.h),
+                                               params::vertex_normal_map(normals));
+  Mesh quads;
+  auto planes = quads.add_property_map<Mesh::Vertex_index, RSR::Tangent_planes>("v:planes").first;
+  auto dual_normals = quads.add_property_map<Mesh::Vertex_index, Vector>("v:normal").first;
+  const auto dual = RSR::dualize(primal, quads, RSR::parameters::dual_placement(RSR::Dual_placement::QEM,
+                                                                                params::vertex_normal_map(normals)),
+                                 RSR::parameters::vertex_tangent_planes_map(planes, params::vertex_normal_map(dual_normals)));
+  const std::size_t cycles = number_of_border_cycles(c.mesh) - primal_stats.uncrossed_border_cycles;
+  CHECK(CGAL::is_valid_polygon_mesh(quads));
+  CHECK_EQ(non_quads(quads), std::size_t(0));
+  CHECK_EQ(dual.dropped_pieces, std::size_t(0));
+  CHECK_EQ(number_of_border_cycles(quads), cycles);
+  CHECK_EQ(euler_characteristic(quads), euler_characteristic(primal));
+  const double dual_border = border_hausdorff(c.mesh, quads) / c.h;
+
+  const auto fixed_border = border_points(quads);
+  const auto collapse = RSR::collapse_quads(
+      quads, RSR::parameters::vertex_tangent_planes_map(planes, params::vertex_normal_map(dual_normals)));
+  CHECK(CGAL::is_valid_polygon_mesh(quads));
+  CHECK_EQ(non_quads(quads), std::size_t(0));
+  CHECK(border_points(quads) == fixed_border);
+  CHECK_EQ(number_of_border_cycles(quads), cycles);
+  // parallel edges come from primal faces sharing two edges (coarse cells); the
+  // collapse must not add any
+  CHECK(RSR::internal::number_of_parallel_edges(quads) <= dual.parallel_edges);
+
+  RSR::relax_on_tangent_planes(quads, RSR::parameters::vertex_tangent_planes_map(
+                                          planes, params::vertex_normal_map(dual_normals)));
+  const double relaxed_border = border_hausdorff(c.mesh, quads) / c.h;
+  std::size_t regular = 0, inner = 0;
+  for(auto v : vertices(quads))
+    if(!CGAL::is_border(v, quads)) {
+      ++inner;
+      regular += degree(v, quads) == 4;
+    }
+  std::cout << c.name << " dual: " << num_vertices(quads) << " vertices, " << num_faces(quads)
+            << " quads, " << collapse.collapsed_quads << " collapsed, inner valence 4: "
+            << 100. * regular / inner << " %, border Hausdorff dual " << dual_border
+            << " h, relaxed " << relaxed_border << " h" << std::endl;
+  // the dual border runs through the middles of primal border edges, themselves
+  // chords of the input border within one cell
+  CHECK(dual_border <= std::sqrt(3.));
+  CHECK(relaxed_border <= std::sqrt(3.));
+}
+
 std::vector<Open_case> generated_cases()
 {
   std::vector<Open_case> cases;
@@ -156,8 +230,11 @@ std::vector<Open_case> generated_cases()
 
 void test_generated(RSR::Seeding_method seeding)
 {
-  for(const Open_case& c : generated_cases())
+  for(const Open_case& c : generated_cases()) {
     check_primal(c, seeding);
+    if(seeding == RSR::Seeding_method::COMPLETE_SCAN)
+      check_dual_pipeline(c);
+  }
 }
 
 /// A single triangle and a one-triangle-wide strip are all border: arcs go from
@@ -179,6 +256,8 @@ void test_all_border()
       CHECK_EQ(euler_characteristic(out), 1L);
       CHECK_EQ(stats.uncrossed_border_cycles, std::size_t(0));
     }
+  check_dual_pipeline({"triangle", triangle, 0.1});
+  check_dual_pipeline({"strip", strip, 0.1});
 }
 
 /// A small disk that one hyperplane crosses: two boundary vertices joined by an arc
@@ -197,7 +276,42 @@ void test_disk_crossed_once()
     CHECK_EQ(num_faces(out), std::size_t(1));
     CHECK_EQ(num_vertices(out), std::size_t(3));
     CHECK_EQ(number_of_border_cycles(out), std::size_t(1));
+    // its vertices are all on the border with valence 2: no dual face, no dual
+    Mesh quads;
+    const auto dual = RSR::dualize(out, quads);
+    CHECK_EQ(dual.dropped_pieces, std::size_t(1));
+    CHECK_EQ(num_faces(quads), std::size_t(0));
+    CHECK_EQ(num_vertices(quads), std::size_t(0));
   }
+}
+
+/// Two quads side by side: the border has two vertices of valence 3, so two chains
+/// only; one is cut at a valence-2 vertex, where the dual border passes through the
+/// dual vertex of its face, so that the dual border cycle has more than two edges.
+void test_dual_of_two_quads()
+{
+  Mesh two;
+  std::vector<Mesh::Vertex_index> v;
+  for(const auto& [x, y] : std::vector<std::pair<double, double>>{{0, 0}, {1, 0}, {2, 0}, {2, 1}, {1, 1}, {0, 1}})
+    v.push_back(two.add_vertex(Point(x, y, 0)));
+  two.add_face(v[0], v[1], v[4], v[5]);
+  two.add_face(v[1], v[2], v[3], v[4]);
+  Mesh quads;
+  const auto dual = RSR::dualize(two, quads);
+  CHECK(CGAL::is_valid_polygon_mesh(quads));
+  CHECK_EQ(dual.quads, std::size_t(2));
+  CHECK_EQ(dual.non_quads, std::size_t(0));
+  CHECK_EQ(num_vertices(quads), std::size_t(5));
+  CHECK_EQ(number_of_border_cycles(quads), std::size_t(1));
+  CHECK_EQ(euler_characteristic(quads), 1L);
+  // the dual border lies on the primal's: every border vertex but the one through a
+  // face is on the primal square's border
+  std::size_t on_primal_border = 0;
+  for(auto w : vertices(quads)) {
+    const Point& p = quads.point(w);
+    on_primal_border += p.y() == 0 || p.y() == 1 || p.x() == 0 || p.x() == 2;
+  }
+  CHECK_EQ(on_primal_border, std::size_t(3));
 }
 
 /// A hole inside one cell has no boundary vertex: the output covers it, and the
@@ -238,8 +352,11 @@ void test_cgal_meshes(const std::string& directory)
       ++failures;
       continue;
     }
-    for(double fraction : {0.02, 0.01})
-      check_primal({name, m, fraction * bbox_diagonal(m)}, RSR::Seeding_method::COMPLETE_SCAN);
+    for(double fraction : {0.02, 0.01}) {
+      const Open_case c{name, m, fraction * bbox_diagonal(m)};
+      check_primal(c, RSR::Seeding_method::COMPLETE_SCAN);
+      check_dual_pipeline(c);
+    }
   }
 }
 
@@ -249,6 +366,7 @@ int main(int argc, char** argv)
   test_generated(RSR::Seeding_method::SEEDED);
   test_all_border();
   test_disk_crossed_once();
+  test_dual_of_two_quads();
   test_uncrossed_hole();
   if(argc > 1)
     test_cgal_meshes(argv[1]);

@@ -28,6 +28,7 @@
 
 #include <array>
 #include <chrono>
+#include <cstdint>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -52,6 +53,34 @@ inline std::pair<Vec3, Vec3> place_dual_vertex(const Tangent_planes& planes, Dua
   const Vec3 unit_normal = normalized(normal);
   const Vec3 position = placement == Dual_placement::QEM ? quadric.minimiser(mass, 0.1, &unit_normal) : mass;
   return {position, unit_normal};
+}
+
+/// Marks in `ends_chain` the valence-2 vertices where the border cycle `cycle` (its
+/// vertices in order, the last with a dual face) is cut so that it has at least three
+/// chains: those of a cycle with one or two vertices with a dual face, taken evenly
+/// along the longest chains.
+template <class Vertex, class HasDualFace, class VertexIndexMap>
+void split_short_border_cycle(const std::vector<Vertex>& cycle, const HasDualFace& has_dual_face,
+                              std::vector<std::uint8_t>& ends_chain, VertexIndexMap vertex_index)
+{
+  std::vector<std::vector<Vertex>> insides(1); // of each chain, the vertices without dual face
+  for(Vertex v : cycle) {
+    if(has_dual_face(v))
+      insides.emplace_back();
+    else
+      insides.back().push_back(v);
+  }
+  insides.pop_back(); // after the last vertex: empty
+  if(insides.size() >= 3)
+    return;
+  auto cut = [&](const std::vector<Vertex>& inside, std::size_t parts) {
+    for(std::size_t k = 1; k < parts && inside.size() >= parts - 1; ++k)
+      ends_chain[get(vertex_index, inside[k * inside.size() / parts])] = 1;
+  };
+  if(insides.size() == 1)
+    cut(insides[0], 3);
+  else
+    cut(insides[0].size() >= insides[1].size() ? insides[0] : insides[1], 2);
 }
 
 /// Number of edges that join the same two vertices as another edge.
@@ -153,9 +182,11 @@ std::size_t remove_pieces_with_non_simple_faces(Mesh& mesh, std::size_t& number_
 /// valence-2 vertices (in two merged digons) chain together and join valence-3 ends
 /// (charge 1) or, failing those, one valence-4 neighbour; charge-1 groups are matched
 /// along primal edges, the most constrained first.
-template <class PolygonMesh, class VertexIndexMap>
+/// A border vertex's dual face has one corner more (the border closes it); vertices
+/// without a dual face (`has_dual_face(v)` false) take no part.
+template <class PolygonMesh, class VertexIndexMap, class HasDualFace>
 std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>
-edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index)
+edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index, const HasDualFace& has_dual_face)
 {
   using halfedge_descriptor = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
   const std::size_t n = num_vertices(primal);
@@ -167,12 +198,22 @@ edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index)
       x = parent[x] = parent[parent[x]];
     return x;
   };
-  std::vector<halfedge_descriptor> low_edges; // edges with an end of valence below 4
+  std::vector<halfedge_descriptor> low_edges; // edges with an end whose dual face is not a quad
+  // a border vertex's dual face has one corner more than its valence (the dual vertex
+  // of the border chain arriving); border vertices of valence 2 have no dual face
+  auto corners_of_dual_face = [&](auto v) {
+    return degree(v, primal) + (is_border(v, primal) ? 1 : 0);
+  };
   for(auto v : vertices(primal))
-    charge[get(vertex_index, v)] = std::size_t(std::max<long>(0, long(degree(v, primal)) - 2));
+    charge[get(vertex_index, v)] = std::size_t(std::max<long>(0, long(corners_of_dual_face(v)) - 2));
+  auto between_dual_faces = [&](halfedge_descriptor h) {
+    return !is_border(edge(h, primal), primal) && has_dual_face(source(h, primal)) &&
+           has_dual_face(target(h, primal));
+  };
   for(auto e : edges(primal)) {
     const halfedge_descriptor h = halfedge(e, primal);
-    if(degree(source(h, primal), primal) < 4 || degree(target(h, primal), primal) < 4)
+    if(between_dual_faces(h) &&
+       (corners_of_dual_face(source(h, primal)) < 4 || corners_of_dual_face(target(h, primal)) < 4))
       low_edges.push_back(h);
   }
   auto groups = [&](halfedge_descriptor h) {
@@ -225,6 +266,8 @@ edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index)
   for(std::size_t wanted : {std::size_t(2), std::size_t(1), std::size_t(3)})
     for(auto e : edges(primal)) {
       const halfedge_descriptor h = halfedge(e, primal);
+      if(!between_dual_faces(h))
+        continue;
       const auto [a, b] = groups(h);
       if(a != b && ((charge[a] == 0 && charge[b] >= wanted) || (charge[a] >= wanted && charge[b] == 0)))
         join(h);
@@ -237,11 +280,21 @@ edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index)
 /*!
 \ingroup PkgRangeSpaceRemeshingRef
 
-builds the dual of the closed polygon mesh `primal` into `quads`: one vertex per
-primal face, one face per primal vertex (its incident faces in rotation order).
-When every primal vertex has valence 4, as in the output of `primal_remesh()`, every
-dual face is a quad. The ends of merged digons (valence 3, or 2 for a vertex in two
-digons) give triangles and 2-gons; they are joined across the merged edges into quads.
+builds the dual of the polygon mesh `primal` into `quads`: one vertex per primal
+face, one face per primal vertex (its incident faces in rotation order). When every
+primal vertex has valence 4, as in the output of `primal_remesh()`, every dual face is
+a quad. The ends of merged digons (valence 3, or 2 for a vertex in two digons) give
+triangles and 2-gons; they are joined across the merged edges into quads.
+
+On a border (paper, section 7), the primal border is cut into chains at its vertices
+of valence 3 or more (the regular valence there, as from `primal_remesh()`); each
+chain has a dual vertex half-way along it, on the primal border, and each such border
+vertex a dual face closed by a dual border edge between the dual vertices of its two
+chains: a quad for valence 3. The dual so has the primal's Euler characteristic and
+border cycles, and its border lies on the primal's: it cannot shrink away from it.
+Border vertices of valence 2 inside a chain have no dual face (but one, a triangle,
+where a border cycle would otherwise have a single chain), and a face whose vertices
+all lack one (a piece made of one face) has no dual; it counts as a dropped piece.
 
 The dual vertex of a primal face is placed at the average of the face's vertices
 (`Dual_placement::AVERAGE`) or at the minimiser of the squared distances to their
@@ -249,7 +302,7 @@ tangent planes (`Dual_placement::QEM`, the default), solved by a truncated
 eigen-decomposition around the average so that flat and rank-deficient faces stay
 well placed. Its normal is the normalised average of the vertices' normals.
 
-\param primal a closed polygon mesh (any `FaceListGraph`).
+\param primal a polygon mesh (any `FaceListGraph`), with or without border.
 \param quads receives the dual (appended); a `MutableFaceGraph`.
 \param np_in `vertex_point_map`, `vertex_normal_map` (unit normals of the primal
   vertices; default: computed from the mesh), `dual_placement`, `vertex_color_map`
@@ -258,7 +311,7 @@ well placed. Its normal is the normalised average of the vertices' normals.
   `vertex_color_map` (receives the average colour of each primal face),
   `vertex_tangent_planes_map` (receives each dual vertex's `Tangent_planes`, which
   `relax_on_tangent_planes()` uses).
-\throws Remeshing_error if `primal` is empty or has a border.
+\throws Remeshing_error if `primal` is empty.
 */
 template <class PolygonMesh, class QuadMesh,
           class NamedParametersIn = CGAL::parameters::Default_named_parameters,
@@ -279,9 +332,6 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
   const auto start = std::chrono::steady_clock::now();
   if(num_faces(primal) == 0)
     throw Remeshing_error("dualize: the primal mesh has no face");
-  for(halfedge_descriptor h : halfedges(primal))
-    if(is_border(h, primal))
-      throw Remeshing_error("dualize: the primal mesh has a border (not supported yet)");
 
   const auto vpm = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, primal));
@@ -335,63 +385,228 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
                                      CGAL::Constant_property_map<dual_vertex, CGAL::IO::Color>());
   using Out_color = typename boost::property_traits<decltype(out_colors)>::value_type;
 
-  // a dual vertex per primal face
-  std::vector<dual_vertex> dual_of_face(num_faces(primal));
+  // The border (paper, section 7, here with a dual that keeps the primal's topology):
+  // a border vertex of valence 3 or more has a dual face too, closed on the outside by
+  // dual vertices on the primal border. Those sit one per border chain, the primal
+  // border between two consecutive such vertices (the vertices of valence 2 inside a
+  // chain, ends of merged digons and corners, have no dual face). A chain's dual
+  // vertex lies on the primal border and is placed from primal border data only, so
+  // the dual border cannot shrink away from it.
+  constexpr std::size_t no_chain = std::size_t(-1);
+  std::vector<std::uint8_t> on_border(num_vertices(primal), 0);
+  for(vertex_descriptor v : vertices(primal))
+    on_border[get(vertex_index, v)] = bool(is_border(v, primal));
+  std::vector<std::uint8_t> has_dual_face_(num_vertices(primal), 0);
+  for(vertex_descriptor v : vertices(primal))
+    has_dual_face_[get(vertex_index, v)] = !on_border[get(vertex_index, v)] || degree(v, primal) >= 3;
+  auto has_dual_face = [&](vertex_descriptor v) { return bool(has_dual_face_[get(vertex_index, v)]); };
+  // Chains end at those vertices, and also at a few valence-2 vertices, where a border
+  // cycle would otherwise have fewer than three chains (a dual border cycle of one or
+  // two edges): the dual border passes there through the dual vertex of their face.
+  std::vector<std::uint8_t> ends_chains(has_dual_face_);
+  auto ends_chain = [&](vertex_descriptor v) { return bool(ends_chains[get(vertex_index, v)]); };
+  {
+    std::vector<std::uint8_t> walked(num_halfedges(primal), 0);
+    std::vector<vertex_descriptor> cycle; // starting after a vertex with a dual face
+    for(halfedge_descriptor h : halfedges(primal)) {
+      if(!is_border(h, primal) || walked[get(halfedge_index, h)] || !has_dual_face(source(h, primal)))
+        continue;
+      cycle.clear();
+      for(halfedge_descriptor g : CGAL::halfedges_around_face(h, primal)) {
+        walked[get(halfedge_index, g)] = 1;
+        cycle.push_back(target(g, primal));
+      }
+      internal::split_short_border_cycle(cycle, has_dual_face, ends_chains, vertex_index);
+    }
+  }
+  struct Border_chain {
+    halfedge_descriptor first, last; // border halfedges (null face), in border order
+  };
+  std::vector<Border_chain> chains;
+  std::vector<std::size_t> chain_of(num_halfedges(primal), no_chain); // of border halfedges
+  for(halfedge_descriptor h : halfedges(primal)) {
+    if(!is_border(h, primal) || chain_of[get(halfedge_index, h)] != no_chain ||
+       !ends_chain(source(h, primal)))
+      continue;
+    halfedge_descriptor last = h;
+    for(;;) {
+      chain_of[get(halfedge_index, last)] = chains.size();
+      if(ends_chain(target(last, primal)))
+        break;
+      last = next(last, primal);
+    }
+    chains.push_back({h, last});
+  }
+
   Tangent_planes planes;
-  for(auto f : faces(primal)) {
-    planes.clear();
-    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, primal), primal))
-      planes.emplace_back(point_of[get(vertex_index, v)], normal_of[get(vertex_index, v)]);
-    const auto placed = internal::place_dual_vertex(planes, placement);
+  std::vector<std::pair<vertex_descriptor, double>> color_sources; // with weights
+  auto add_dual_vertex = [&](const internal::Vec3& position, const internal::Vec3& normal) {
     const dual_vertex dv = add_vertex(quads);
-    put(out_vpm, dv, Out_point(placed.first[0], placed.first[1], placed.first[2]));
+    put(out_vpm, dv, Out_point(position[0], position[1], position[2]));
     if constexpr(wants_normals)
-      put(out_normals, dv, Out_vector(placed.second[0], placed.second[1], placed.second[2]));
+      put(out_normals, dv, Out_vector(normal[0], normal[1], normal[2]));
     if constexpr(wants_planes)
       put(out_planes, dv, planes);
     if constexpr(wants_colors) {
       internal::Vec3 rgb = {{0, 0, 0}};
-      for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, primal), primal)) {
+      for(const auto& [v, weight] : color_sources) {
         const internal::Vec3 c = internal::to_rgb(get(in_colors, v));
         for(int d = 0; d < 3; ++d)
-          rgb[d] += c[d] / double(planes.size());
+          rgb[d] += weight * c[d];
       }
       put(out_colors, dv, internal::from_rgb<Out_color>(rgb));
     }
-    dual_of_face[get(face_index, f)] = dv;
+    return dv;
+  };
+  std::vector<dual_vertex> dual_of_face(num_faces(primal));
+  for(auto f : faces(primal)) {
+    planes.clear();
+    color_sources.clear();
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, primal), primal)) {
+      planes.emplace_back(point_of[get(vertex_index, v)], normal_of[get(vertex_index, v)]);
+      color_sources.emplace_back(v, 1. / double(degree(f, primal)));
+    }
+    const auto placed = internal::place_dual_vertex(planes, placement);
+    dual_of_face[get(face_index, f)] = add_dual_vertex(placed.first, placed.second);
+  }
+  // a chain's dual vertex: half-way along it, with the tangent planes of the ends of
+  // the primal border edge it lies on (along which the relaxation lets it slide)
+  auto add_dual_vertex_on_chain = [&](const Border_chain& chain) {
+    auto point = [&](vertex_descriptor v) { return point_of[get(vertex_index, v)]; };
+    auto length = [&](halfedge_descriptor h) {
+      const internal::Vec3 edge = internal::difference(point(target(h, primal)), point(source(h, primal)));
+      return std::sqrt(internal::dot(edge, edge));
+    };
+    double half = 0;
+    for(halfedge_descriptor h = chain.first;; h = next(h, primal)) {
+      half += length(h) / 2;
+      if(h == chain.last)
+        break;
+    }
+    halfedge_descriptor h = chain.first;
+    while(h != chain.last && length(h) < half) {
+      half -= length(h);
+      h = next(h, primal);
+    }
+    const vertex_descriptor a = source(h, primal), b = target(h, primal);
+    const double t = length(h) > 0 ? (std::min)(half / length(h), 1.) : 0.5;
+    const std::size_t ia = get(vertex_index, a), ib = get(vertex_index, b);
+    internal::Vec3 position, normal;
+    for(int d = 0; d < 3; ++d) {
+      position[d] = (1 - t) * point_of[ia][d] + t * point_of[ib][d];
+      normal[d] = (1 - t) * normal_of[ia][d] + t * normal_of[ib][d];
+    }
+    planes.assign({{point_of[ia], normal_of[ia]}, {point_of[ib], normal_of[ib]}});
+    color_sources.assign({{a, 1 - t}, {b, t}});
+    return add_dual_vertex(position, internal::normalized(normal));
+  };
+  std::vector<dual_vertex> dual_of_chain;
+  for(const Border_chain& chain : chains)
+    dual_of_chain.push_back(add_dual_vertex_on_chain(chain));
+  Dual_statistics stats;
+  stats.dual_vertices = num_faces(primal) + chains.size();
+
+  // the dual vertex on the side of face(h) of the primal edge of h
+  auto dual_on_side = [&](halfedge_descriptor h) {
+    return is_border(h, primal) ? dual_of_chain[chain_of[get(halfedge_index, h)]]
+                                : dual_of_face[get(face_index, face(h, primal))];
+  };
+
+  // A dual halfedge d(h) per primal halfedge h, from the dual vertex on the side of h
+  // to the one on the side of opposite(h), in the dual face of target(h); the border
+  // halfedges of a chain share one dual edge. next(d(h)) = d(prev(opposite(h))) turns
+  // counter-clockwise around target(h), so the dual has the primal's orientation.
+  std::vector<dual_halfedge> dual_of_halfedge(num_halfedges(primal));
+  auto d = [&](halfedge_descriptor h) { return dual_of_halfedge[get(halfedge_index, h)]; };
+  auto add_dual_edge = [&](halfedge_descriptor h) {
+    const dual_halfedge dh = halfedge(add_edge(quads), quads);
+    set_target(dh, dual_on_side(opposite(h, primal)), quads);
+    set_target(opposite(dh, quads), dual_on_side(h), quads);
+    return dh;
+  };
+  for(auto e : edges(primal)) {
+    halfedge_descriptor h = halfedge(e, primal);
+    if(is_border(opposite(h, primal), primal))
+      h = opposite(h, primal);
+    const std::size_t chain = is_border(h, primal) ? chain_of[get(halfedge_index, h)] : no_chain;
+    if(is_border(h, primal) && (chain == no_chain || h != chains[chain].last))
+      continue; // inside a chain (done with its last edge), or a face without a dual
+    const dual_halfedge dh = add_dual_edge(h);
+    for(halfedge_descriptor g = h;; g = prev(g, primal)) {
+      dual_of_halfedge[get(halfedge_index, g)] = dh;
+      dual_of_halfedge[get(halfedge_index, opposite(g, primal))] = opposite(dh, quads);
+      if(!is_border(g, primal) || g == chains[chain].first)
+        break;
+    }
   }
 
-  // A dual halfedge d(h) per primal halfedge h, from the dual of face(h) to the dual
-  // of face(opposite(h)), in the dual face of target(h); next(d(h)) = d(prev(opposite(h)))
-  // turns counter-clockwise around target(h), so the dual has the primal's orientation.
-  std::vector<dual_halfedge> dual_of_halfedge(num_halfedges(primal));
-  for(auto e : edges(primal)) {
-    const halfedge_descriptor h = halfedge(e, primal);
-    const auto de = add_edge(quads);
-    dual_of_halfedge[get(halfedge_index, h)] = halfedge(de, quads);
-    dual_of_halfedge[get(halfedge_index, opposite(h, primal))] = opposite(halfedge(de, quads), quads);
-  }
-  auto d = [&](halfedge_descriptor h) { return dual_of_halfedge[get(halfedge_index, h)]; };
-  Dual_statistics stats;
+  // The dual faces; a border vertex's is closed by a dual edge from the dual vertex
+  // of the chain leaving it to that of the chain arriving, whose opposite is on the
+  // dual border.
+  const auto null_face = boost::graph_traits<QuadMesh>::null_face();
+  std::vector<dual_halfedge> closing_of_vertex(num_vertices(primal)); // dual face's border side
   for(vertex_descriptor v : vertices(primal)) {
+    if(!has_dual_face(v))
+      continue;
     const dual_face df = add_face(quads);
-    set_halfedge(df, d(halfedge(v, primal)), quads);
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(v, primal), primal)) {
-      const dual_halfedge dh = d(h);
-      const dual_vertex target_vertex = dual_of_face[get(face_index, face(opposite(h, primal), primal))];
-      set_target(dh, target_vertex, quads);
-      set_halfedge(target_vertex, dh, quads);
-      set_next(dh, d(prev(opposite(h, primal), primal)), quads);
-      set_face(dh, df, quads);
+    halfedge_descriptor first = halfedge(v, primal);
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(v, primal), primal))
+      if(is_border(h, primal))
+        first = h;
+    set_halfedge(df, d(first), quads);
+    for(halfedge_descriptor h : CGAL::halfedges_around_target(first, primal)) {
+      set_face(d(h), df, quads);
+      set_halfedge(target(d(h), quads), d(h), quads);
+      if(!is_border(opposite(h, primal), primal)) {
+        set_next(d(h), d(prev(opposite(h, primal), primal)), quads);
+        continue;
+      }
+      const dual_halfedge closing = halfedge(add_edge(quads), quads);
+      set_target(closing, dual_on_side(first), quads);
+      set_target(opposite(closing, quads), dual_on_side(opposite(h, primal)), quads);
+      set_face(closing, df, quads);
+      set_face(opposite(closing, quads), null_face, quads);
+      set_next(d(h), closing, quads);
+      set_next(closing, d(first), quads);
+      closing_of_vertex[get(vertex_index, v)] = closing;
     }
     ++stats.dual_faces;
   }
-  stats.dual_vertices = num_faces(primal);
+  // A face whose corners have no dual face is a whole component bounded by one border
+  // cycle of valence-2 vertices: it has no dual.
+  std::size_t faces_without_dual = 0;
+  for(auto f : faces(primal)) {
+    const auto corners = CGAL::vertices_around_face(halfedge(f, primal), primal);
+    if(std::none_of(corners.begin(), corners.end(), has_dual_face)) {
+      remove_vertex(dual_of_face[get(face_index, f)], quads);
+      ++faces_without_dual;
+    }
+  }
+  stats.dual_vertices -= faces_without_dual;
+  // The dual border, in the primal border's direction: a chain's dual vertex is
+  // between the closings of its ends, or, at an end without a dual face, the dual
+  // edge of the chain to the dual vertex of the face there.
+  for(const Border_chain& chain : chains) {
+    const vertex_descriptor from = source(chain.first, primal), to = target(chain.last, primal);
+    const dual_halfedge arriving = has_dual_face(from) ? opposite(closing_of_vertex[get(vertex_index, from)], quads)
+                                                       : d(opposite(chain.first, primal));
+    const dual_halfedge leaving = has_dual_face(to) ? opposite(closing_of_vertex[get(vertex_index, to)], quads)
+                                                    : d(chain.last);
+    set_next(arriving, leaving, quads);
+    set_halfedge(target(arriving, quads), arriving, quads);
+    if(!has_dual_face(to)) { // through the dual vertex of the face at `to`
+      const dual_halfedge onwards = d(opposite(next(chain.last, primal), primal));
+      set_face(leaving, null_face, quads);
+      set_face(onwards, null_face, quads);
+      set_next(leaving, onwards, quads);
+      set_halfedge(target(leaving, quads), leaving, quads);
+    }
+  }
 
   // Where the primal has vertices of valence 3 and 2 (the ends of merged digons),
   // join the dual faces across the primal edges chosen by `edges_to_join()`: each
   // group of joined faces then has exactly four corners.
-  for(halfedge_descriptor h : internal::edges_to_join(primal, vertex_index)) {
+  for(halfedge_descriptor h : internal::edges_to_join(primal, vertex_index, has_dual_face)) {
     const dual_halfedge dh = d(h);
     if(!internal::join_keeps_face_simple(dh, quads))
       continue; // left as two faces: counted in non_quads
@@ -399,7 +614,7 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     ++stats.joined_triangle_pairs;
     --stats.dual_faces;
   }
-  stats.dropped_pieces = internal::remove_pieces_with_non_simple_faces(quads, stats.dual_faces);
+  stats.dropped_pieces = faces_without_dual + internal::remove_pieces_with_non_simple_faces(quads, stats.dual_faces);
   internal::collect_garbage_if_any(quads);
   for(auto f : faces(quads))
     (degree(f, quads) == 4 ? stats.quads : stats.non_quads) += 1;

@@ -59,7 +59,9 @@ pass collapses nothing or `number_of_iterations` passes have run.
     vertices stay on the mesh's faces, creases and corners);
   - `vertex_is_constrained_map` (vertex -> bool, default: none constrained);
   - `number_of_iterations` (the maximum number of passes, default 10).
-\throws Remeshing_error if the mesh is empty or has a border.
+Border vertices are never moved nor merged (so no border cycle moves or joins
+another); their regular valence is 3 in the energy.
+\throws Remeshing_error if the mesh is empty.
 */
 template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Collapse_statistics collapse_quads(PolygonMesh& mesh,
@@ -75,9 +77,6 @@ Collapse_statistics collapse_quads(PolygonMesh& mesh,
   const auto start = std::chrono::steady_clock::now();
   if(num_faces(mesh) == 0)
     throw Remeshing_error("collapse_quads: the mesh has no face");
-  for(auto h : halfedges(mesh))
-    if(is_border(h, mesh))
-      throw Remeshing_error("collapse_quads: the mesh has a border (not supported yet)");
 
   using VPM = typename GetVertexPointMap<PolygonMesh, NamedParameters>::type;
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),

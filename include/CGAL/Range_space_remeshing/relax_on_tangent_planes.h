@@ -35,6 +35,13 @@ the vertices evenly but shrinks and smooths, then (b) moves it back along the li
 \f$\lambda = \sum \langle v_i - v', n_i\rangle \langle n', n_i\rangle / (\sum \langle n', n_i\rangle^2 + \epsilon)\f$,
 which undoes the shrinking: vertices slide on the surface, features stay.
 
+Border vertices (paper, section 7) are averaged with their two border neighbours only,
+and put back on the segment between the two points of their tangent planes: a dual
+border vertex from `dualize()` has the planes of the two primal border vertices around
+it, so it slides along the primal border and the border does not shrink. A border
+vertex without exactly two planes (e.g. of a mesh that came without planes) stays
+where it is.
+
 \param mesh a polygon mesh (any `FaceGraph`, e.g. the output of `dualize()`);
   positions (and normals if given) are updated, the connectivity is not.
 \param np optional named parameters:
@@ -88,14 +95,20 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
       normal[i] = internal::normalized(internal::average_normal(get(tangent_planes, v)));
   }
 
+  std::vector<std::uint8_t> on_border(n, 0);
+  for(vertex_descriptor v : vertices(mesh))
+    on_border[get(vertex_index, v)] = bool(is_border(v, mesh));
+
   constexpr double epsilon = 1e-3; // the weak extra plane at (v', n'): never singular
   for(int iteration = 0; iteration < iterations; ++iteration) {
     for(vertex_descriptor v : vertices(mesh)) {
       const std::size_t i = get(vertex_index, v);
       Vec3 p = {{0, 0, 0}}, m = {{0, 0, 0}};
       int count = 0;
-      for(vertex_descriptor w : CGAL::vertices_around_target(halfedge(v, mesh), mesh)) {
-        const std::size_t j = get(vertex_index, w);
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, mesh), mesh)) {
+        if(on_border[i] && !is_border(edge(h, mesh), mesh))
+          continue; // a border vertex moves along the border only
+        const std::size_t j = get(vertex_index, source(h, mesh));
         for(int d = 0; d < 3; ++d) {
           p[d] += position[j][d];
           m[d] += normal[j][d];
@@ -106,6 +119,16 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
         p[d] /= count;
       m = internal::normalized(m);
       const auto& planes = get(tangent_planes, v);
+      if(on_border[i]) {
+        if(planes.size() == 2) {
+          next_position[i] = internal::closest_on_segment(p, planes[0].first, planes[1].first);
+          next_normal[i] = m == Vec3{{0, 0, 0}} ? normal[i] : m;
+        } else {
+          next_position[i] = position[i];
+          next_normal[i] = normal[i];
+        }
+        continue;
+      }
       if(planes.empty() || m == Vec3{{0, 0, 0}}) { // nothing to project on: keep the vertex
         next_position[i] = position[i];
         next_normal[i] = normal[i];

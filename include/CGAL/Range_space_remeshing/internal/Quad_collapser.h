@@ -55,10 +55,13 @@ public:
     : mesh_(mesh), vpm_(vpm), planes_(planes), constrained_(constrained),
       vertex_index_(vertex_index), normals_(normals), face_index_(face_index),
       removed_faces_(index_bound(faces(mesh), face_index), false),
-      touched_in_pass_(removed_faces_.size(), 0), valences_(index_bound(vertices(mesh), vertex_index))
+      touched_in_pass_(removed_faces_.size(), 0), valences_(index_bound(vertices(mesh), vertex_index)),
+      on_border_(valences_.size(), 0)
   {
-    for(vertex_descriptor v : vertices(mesh_))
+    for(vertex_descriptor v : vertices(mesh_)) {
       valences_[index(v)] = int(degree(v, mesh_));
+      on_border_[index(v)] = bool(is_border(v, mesh_));
+    }
   }
 
   /// Passes over the quads: the first over all of them, each next one over the quads
@@ -111,6 +114,17 @@ public:
 private:
   std::size_t index(vertex_descriptor v) const { return get(vertex_index_, v); }
   int valence(vertex_descriptor v) const { return valences_[index(v)]; }
+  // Border vertices are never moved nor merged; a regular one has valence 3 (two border
+  // edges and one inside), and may go down to 2 (a corner of the surface).
+  bool on_border(vertex_descriptor v) const { return on_border_[index(v)]; }
+  int regular_valence(vertex_descriptor v) const { return on_border(v) ? 3 : 4; }
+  int lowest_valence(vertex_descriptor v) const { return on_border(v) ? 2 : 3; }
+  /// Sets the halfedge of v, unless v is on the border: its halfedge stays the border one.
+  void set_inner_halfedge(vertex_descriptor v, halfedge_descriptor h)
+  {
+    if(!on_border(v))
+      set_halfedge(v, h, mesh_);
+  }
   Vec3 position(vertex_descriptor v) const { return to_vec3(get(vpm_, v)); }
 
   /// The quads of `quads` with a collapse that lowers the valence energy, best first.
@@ -143,6 +157,8 @@ private:
   void touch_faces_around(vertex_descriptor v)
   {
     for(face_descriptor g : CGAL::faces_around_target(halfedge(v, mesh_), mesh_)) {
+      if(g == boost::graph_traits<PolygonMesh>::null_face())
+        continue; // around a border vertex
       std::size_t& stamp = touched_in_pass_[get(face_index_, g)];
       if(stamp != pass_) {
         stamp = pass_;
@@ -155,10 +171,13 @@ private:
   int energy_decrease(halfedge_descriptor h0) const
   {
     const halfedge_descriptor h1 = next(h0, mesh_), h2 = next(h1, mesh_);
-    const int a = valence(source(h0, mesh_)), b = valence(target(h0, mesh_)),
-              c = valence(target(h1, mesh_)), d = valence(target(h2, mesh_));
-    auto e = [](int valence) { return (valence - 4) * (valence - 4); };
-    return e(a) + e(b) + e(c) + e(d) - (e(a + c - 2) + e(b - 1) + e(d - 1));
+    const vertex_descriptor va = source(h0, mesh_), vb = target(h0, mesh_), vc = target(h1, mesh_),
+                            vd = target(h2, mesh_);
+    const int a = valence(va), b = valence(vb), c = valence(vc), d = valence(vd);
+    auto e = [this](int valence, vertex_descriptor v) {
+      return (valence - regular_valence(v)) * (valence - regular_valence(v));
+    };
+    return e(a, va) + e(b, vb) + e(c, vc) + e(d, vd) - (e(a + c - 2, va) + e(b - 1, vb) + e(d - 1, vd));
   }
 
   /// Link condition for quads: the merged vertex has one disk of faces, no two edges
@@ -168,9 +187,9 @@ private:
     const halfedge_descriptor h1 = next(h0, mesh_), h2 = next(h1, mesh_);
     const vertex_descriptor a = source(h0, mesh_), b = target(h0, mesh_), c = target(h1, mesh_),
                             d = target(h2, mesh_);
-    if(a == c || b == d || get(constrained_, a) || get(constrained_, c))
+    if(a == c || b == d || get(constrained_, a) || get(constrained_, c) || on_border(a) || on_border(c))
       return false;
-    if(valence(b) < 4 || valence(d) < 4 || valence(a) < 3 || valence(c) < 3)
+    if(valence(b) <= lowest_valence(b) || valence(d) <= lowest_valence(d) || valence(a) < 3 || valence(c) < 3)
       return false;
     auto& around_a = around_a_;
     around_a.clear();
@@ -271,8 +290,8 @@ private:
     replace_in_face(o1, h0);
     replace_in_face(o2, h3);
     set_halfedge(a, opposite(h0, mesh_), mesh_);
-    set_halfedge(b, h0, mesh_);
-    set_halfedge(d, opposite(h3, mesh_), mesh_);
+    set_inner_halfedge(b, h0);
+    set_inner_halfedge(d, opposite(h3, mesh_));
 
     append_planes(a, c);
     put(vpm_, a, Point(merged[0], merged[1], merged[2]));
@@ -293,7 +312,7 @@ private:
   {
     std::vector<vertex_descriptor> doublets;
     for(vertex_descriptor v : vertices(mesh_))
-      if(valence(v) == 2)
+      if(valence(v) == 2 && !on_border(v))
         doublets.push_back(v);
     std::size_t removed = 0;
     for(vertex_descriptor v : doublets) {
@@ -309,8 +328,8 @@ private:
       const vertex_descriptor a = target(e1, mesh_), b = target(e2, mesh_);
       const halfedge_descriptor a_x = next(e1, mesh_), x_b = prev(o2, mesh_);
       const halfedge_descriptor b_y = next(e2, mesh_), y_a = prev(o1, mesh_);
-      if(a == b || target(a_x, mesh_) == target(b_y, mesh_) || valence(a) < 4 || valence(b) < 4 ||
-         get(constrained_, v))
+      if(a == b || target(a_x, mesh_) == target(b_y, mesh_) || valence(a) <= lowest_valence(a) ||
+         valence(b) <= lowest_valence(b) || get(constrained_, v))
         continue;
       // the merged quad (a, x, b, y) must turn like the two it replaces
       corners_ = {position(a), position(target(a_x, mesh_)), position(b), position(target(b_y, mesh_))};
@@ -328,8 +347,8 @@ private:
       set_face(b_y, f, mesh_);
       set_face(y_a, f, mesh_);
       set_halfedge(f, a_x, mesh_);
-      set_halfedge(a, y_a, mesh_);
-      set_halfedge(b, x_b, mesh_);
+      set_inner_halfedge(a, y_a);
+      set_inner_halfedge(b, x_b);
       --valences_[index(a)];
       --valences_[index(b)];
       valences_[index(v)] = 0;
@@ -394,6 +413,7 @@ private:
   std::vector<bool> removed_faces_; // by face index: faces are never created
   std::vector<std::size_t> touched_in_pass_; // by face index: last pass that queued it
   std::vector<int> valences_;                // by vertex index
+  std::vector<std::uint8_t> on_border_;      // by vertex index
   std::size_t pass_ = 0;
   std::vector<face_descriptor>* touched_ = nullptr; // the next pass's faces
   mutable std::vector<vertex_descriptor> around_a_;

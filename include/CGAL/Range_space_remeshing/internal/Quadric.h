@@ -13,6 +13,7 @@
 
 #include <CGAL/number_utils.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <utility>
@@ -54,6 +55,15 @@ Vec3 average_normal(const PlaneRange& planes)
 }
 
 inline Vec3 difference(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
+
+/// The point of segment [a, b] closest to x (a, if the segment is a point).
+inline Vec3 closest_on_segment(const Vec3& x, const Vec3& a, const Vec3& b)
+{
+  const Vec3 ab = difference(b, a);
+  const double length2 = dot(ab, ab);
+  const double t = length2 > 0 ? (std::min)((std::max)(dot(difference(x, a), ab) / length2, 0.), 1.) : 0.;
+  return {{a[0] + t * ab[0], a[1] + t * ab[1], a[2] + t * ab[2]}};
+}
 
 inline Vec3 cross(const Vec3& a, const Vec3& b)
 {
