@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <random>
 
 using namespace test;
 namespace params = CGAL::parameters;
@@ -216,6 +217,47 @@ void check_dual_pipeline(const Open_case& c)
   CHECK(relaxed_border <= std::sqrt(3.));
 }
 
+/// The relaxation of an open mesh it did not produce (no tangent planes): a jittered
+/// square grid. Border vertices must slide along the square's sides only (a corner
+/// stays, it is where two sides meet), and the grid must even out.
+void test_relax_open_square()
+{
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> jitter(-0.3, 0.3);
+  const int n = 12;
+  Mesh m = make_grid_mesh(n, n, false, [&](int r, int c) {
+    const bool border_row = r == 0 || r == n, border_column = c == 0 || c == n;
+    const double x = border_column ? c : c + jitter(rng), y = border_row ? r : r + jitter(rng);
+    return Point(x / n, y / n, 0.);
+  });
+  auto spread = [](const Mesh& mesh) {
+    double shortest = 1e9, longest = 0;
+    for(auto e : edges(mesh)) {
+      const double l = std::sqrt(CGAL::squared_distance(mesh.point(source(e, mesh)), mesh.point(target(e, mesh))));
+      shortest = std::min(shortest, l);
+      longest = std::max(longest, l);
+    }
+    return longest / shortest;
+  };
+  const double before = spread(m);
+  RSR::relax_on_tangent_planes(m, params::number_of_iterations(10));
+  const double after = spread(m);
+  std::cout << "open square relaxed: edge-length ratio " << before << " -> " << after << std::endl;
+  CHECK(after < before);
+  for(auto v : vertices(m)) {
+    const Point& p = m.point(v);
+    CHECK(p.x() >= 0 && p.x() <= 1 && p.y() >= 0 && p.y() <= 1 && p.z() == 0);
+    if(CGAL::is_border(v, m))
+      CHECK(p.x() == 0 || p.x() == 1 || p.y() == 0 || p.y() == 1);
+  }
+  for(const Point& corner : {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(1, 1, 0)}) {
+    bool kept = false;
+    for(auto v : vertices(m))
+      kept = kept || m.point(v) == corner;
+    CHECK(kept);
+  }
+}
+
 std::vector<Open_case> generated_cases()
 {
   std::vector<Open_case> cases;
@@ -367,6 +409,7 @@ int main(int argc, char** argv)
   test_all_border();
   test_disk_crossed_once();
   test_dual_of_two_quads();
+  test_relax_open_square();
   test_uncrossed_hole();
   if(argc > 1)
     test_cgal_meshes(argv[1]);

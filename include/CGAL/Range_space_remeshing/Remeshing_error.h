@@ -16,7 +16,8 @@ namespace Range_space_remeshing {
 \ingroup PkgRangeSpaceRemeshingRef
 
 Thrown by the functions of the package when their input is unusable: an empty
-mesh, a face that is not a triangle, a border where a closed surface is required,
+mesh, a face that is not a triangle, a border where a closed surface is required
+(`insert_crease_triangles()`),
 a NaN or infinite map value, a non-positive or non-finite cell size, a grid so fine
 that the range coordinates overflow or the output cap would be exceeded.
 `what()` names the problem in one line.

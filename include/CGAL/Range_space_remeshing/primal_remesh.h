@@ -220,11 +220,17 @@ All combinatorial decisions are exact predicates on the mapped input coordinates
 with a symbolic perturbation of the grid for degenerate positions, so the result
 is a closed 2-manifold whenever `tm` is one, and does not depend on rounding.
 
-\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeGraph`, closed
-        triangle mesh.
+Borders are supported (paper, section 7): where an input border crosses a grid
+hyperplane, a boundary vertex of valence 3 is placed on it, and boundary edges join
+consecutive ones, so the output has the input's border cycles. A border cycle that
+crosses no grid hyperplane (a hole inside one cell) is covered by the face around it
+and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
+
+\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeGraph`, a triangle
+        mesh (with or without border).
 \tparam PolygonMesh a model of `MutableFaceGraph`.
 
-\param tm the input mesh: closed, 2-manifold, triangles only.
+\param tm the input mesh: 2-manifold, triangles only, with or without border.
 \param out receives the remesh (appended).
 \param np_in optional named parameters for `tm`:
   \cgalNamedParamsBegin
@@ -269,8 +275,7 @@ is a closed 2-manifold whenever `tm` is one, and does not depend on rounding.
   input's vertex normals).
 
 \returns what the run did, including per-stage times.
-\throws Remeshing_error on an empty mesh, a non-triangle face, a border (not
-  supported yet), a non-finite map value or cell size, a cell size so small that
+\throws Remeshing_error on an empty mesh, a non-triangle face, a non-finite map value or cell size, a cell size so small that
   range coordinates exceed 2^29 cells, or when the output cap would be exceeded.
 */
 template <class TriangleMesh, class PolygonMesh,

@@ -47,7 +47,7 @@ planes. Collapses are tried in passes, in decreasing order of energy decrease, u
 pass collapses nothing or `number_of_iterations` passes have run.
 
 \tparam PolygonMesh a model of `MutableFaceGraph` (e.g. `Surface_mesh`, `Polyhedron_3`).
-\param mesh a closed polygon mesh, valid, whose faces are simple polygons. A
+\param mesh a polygon mesh, valid, with or without border, whose faces are simple polygons. A
   `Surface_mesh` is garbage-collected at the end, so that its indices stay contiguous.
 \param np optional named parameters:
   - `vertex_point_map` (read-write; default: the mesh's point map);

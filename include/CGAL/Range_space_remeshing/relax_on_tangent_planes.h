@@ -18,7 +18,9 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -36,11 +38,12 @@ the vertices evenly but shrinks and smooths, then (b) moves it back along the li
 which undoes the shrinking: vertices slide on the surface, features stay.
 
 Border vertices (paper, section 7) are averaged with their two border neighbours only,
-and put back on the segment between the two points of their tangent planes: a dual
-border vertex from `dualize()` has the planes of the two primal border vertices around
-it, so it slides along the primal border and the border does not shrink. A border
-vertex without exactly two planes (e.g. of a mesh that came without planes) stays
-where it is.
+and put back on the border they sample, so that it does not shrink: with
+`vertex_tangent_planes_map`, on the segment between the points of their two tangent
+planes (a dual border vertex from `dualize()` has those of the ends of the primal
+border edge it lies on; a border vertex with another number of planes stays where it
+is); without, on their own two border edges as they were before the relaxation, and
+corners of the border (where it turns by more than 30 degrees) stay.
 
 \param mesh a polygon mesh (any `FaceGraph`, e.g. the output of `dualize()`);
   positions (and normals if given) are updated, the connectivity is not.
@@ -99,6 +102,49 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
   for(vertex_descriptor v : vertices(mesh))
     on_border[get(vertex_index, v)] = bool(is_border(v, mesh));
 
+  // A border vertex slides along the border it samples: the primal border edge between
+  // its two tangent planes' points (from `dualize()`), or, for a mesh that came without
+  // planes, its own two border edges as they were before the relaxation.
+  std::vector<std::array<std::size_t, 2>> border_neighbours(n);
+  for(vertex_descriptor v : vertices(mesh)) {
+    if(!on_border[get(vertex_index, v)])
+      continue;
+    std::size_t found = 0;
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, mesh), mesh))
+      if(is_border(edge(h, mesh), mesh) && found < 2)
+        border_neighbours[get(vertex_index, v)][found++] = get(vertex_index, source(h, mesh));
+    if(found < 2) // not a manifold border vertex: it stays
+      on_border[get(vertex_index, v)] = 2;
+  }
+  const std::vector<Vec3> original = position;
+  if constexpr(!has_planes) { // corners of the border, where it turns by more than 30 degrees, stay
+    const double cos_30 = std::sqrt(3.) / 2;
+    for(std::size_t i = 0; i < n; ++i) {
+      if(on_border[i] != 1)
+        continue;
+      const Vec3 in = internal::difference(original[i], original[border_neighbours[i][0]]),
+                 out = internal::difference(original[border_neighbours[i][1]], original[i]);
+      const double lengths = std::sqrt(internal::dot(in, in) * internal::dot(out, out));
+      if(!(internal::dot(in, out) >= cos_30 * lengths))
+        on_border[i] = 2;
+    }
+  }
+  auto slide_along_border = [&](std::size_t i, const Vec3& p, const Tangent_planes& planes) -> Vec3 {
+    if(on_border[i] != 1)
+      return position[i];
+    if constexpr(has_planes) {
+      if(planes.size() != 2)
+        return position[i];
+      return internal::closest_on_segment(p, planes[0].first, planes[1].first);
+    } else {
+      (void)planes;
+      const Vec3 x = internal::closest_on_segment(p, original[border_neighbours[i][0]], original[i]);
+      const Vec3 y = internal::closest_on_segment(p, original[i], original[border_neighbours[i][1]]);
+      const Vec3 dx = internal::difference(x, p), dy = internal::difference(y, p);
+      return internal::dot(dx, dx) <= internal::dot(dy, dy) ? x : y;
+    }
+  };
+
   constexpr double epsilon = 1e-3; // the weak extra plane at (v', n'): never singular
   for(int iteration = 0; iteration < iterations; ++iteration) {
     for(vertex_descriptor v : vertices(mesh)) {
@@ -120,13 +166,8 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
       m = internal::normalized(m);
       const auto& planes = get(tangent_planes, v);
       if(on_border[i]) {
-        if(planes.size() == 2) {
-          next_position[i] = internal::closest_on_segment(p, planes[0].first, planes[1].first);
-          next_normal[i] = m == Vec3{{0, 0, 0}} ? normal[i] : m;
-        } else {
-          next_position[i] = position[i];
-          next_normal[i] = normal[i];
-        }
+        next_position[i] = slide_along_border(i, p, planes);
+        next_normal[i] = m == Vec3{{0, 0, 0}} ? normal[i] : m;
         continue;
       }
       if(planes.empty() || m == Vec3{{0, 0, 0}}) { // nothing to project on: keep the vertex
