@@ -18,14 +18,13 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
-#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/assertions_behaviour.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/IO/polygon_soup_io.h>
+
+#include "polygon_soup_input.h"
 
 #include <array>
 #include <cmath>
@@ -50,8 +49,9 @@ namespace PMP = CGAL::Polygon_mesh_processing;
 const char* usage =
     "usage: range_space_remesh [options] INPUT OUTPUT\n"
     "\n"
-    "Remeshes the closed triangle mesh INPUT by intersecting its image under a map f\n"
-    "with a uniform grid of cell size H in the range space, and writes OUTPUT.\n"
+    "Remeshes the triangle mesh INPUT (closed or with border) by intersecting its\n"
+    "image under a map f with a uniform grid of cell size H in the range space, and\n"
+    "writes OUTPUT.\n"
     "Formats (by extension): .off .obj .ply .stl. Polygonal input is triangulated.\n"
     "\n"
     "options:\n"
@@ -124,21 +124,6 @@ public:
 private:
   std::streambuf* saved_;
 };
-
-/// Splits every face that is not a triangle into a fan: always possible, whatever
-/// the geometry (used where the constrained triangulation gives up).
-void fan_triangulate(Mesh& mesh)
-{
-  std::vector<Mesh::Face_index> polygons;
-  for(auto f : faces(mesh))
-    if(degree(f, mesh) > 3)
-      polygons.push_back(f);
-  for(auto f : polygons) {
-    auto h = halfedge(f, mesh);
-    while(degree(face(h, mesh), mesh) > 3)
-      h = prev(CGAL::Euler::split_face(h, next(next(h, mesh), mesh), mesh), mesh);
-  }
-}
 
 struct Options
 {
@@ -318,7 +303,6 @@ RSR::Camera read_camera(const std::string& path, double& depth_weight)
   }
 }
 
-/// Reads INPUT as a polygon soup and checks it is a usable closed 2-manifold.
 /// The vertex colours of a PLY or COFF file, in file order; empty if it has none
 /// (CGAL's soup readers cannot return them here, its mesh readers can).
 std::vector<CGAL::IO::Color> read_vertex_colors(const std::string& path, std::size_t number_of_points)
@@ -351,6 +335,8 @@ std::vector<CGAL::IO::Color> read_vertex_colors(const std::string& path, std::si
   return any ? result : std::vector<CGAL::IO::Color>();
 }
 
+/// Reads INPUT as a polygon soup and checks it is a usable 2-manifold triangle mesh
+/// (polygons are triangulated), with its vertex colours if the file has them.
 Mesh read_input(const std::string& path, bool& triangulated)
 {
   if(!is_supported_format(path))
@@ -359,30 +345,26 @@ Mesh read_input(const std::string& path, bool& triangulated)
   std::vector<std::vector<std::size_t>> polygons;
   bool ok = false;
   try {
+    if(extension_of(path) == "ply") {
+      std::ifstream header(path, std::ios::binary);
+      if(header)
+        rsr_input::check_ply_header(header, "'" + path + "'");
+    }
     Silenced_cerr silence;
     ok = CGAL::IO::read_polygon_soup(path, points, polygons);
+  } catch(const rsr_input::Input_error& e) {
+    fail(e.what());
   } catch(const std::exception&) {
     ok = false;
   }
   if(!ok)
     fail("cannot read '" + path + "': missing, unreadable or not a valid mesh file");
-  if(polygons.empty())
-    fail("'" + path + "' contains no face");
-  for(const auto& p : points)
-    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
-      fail("'" + path + "' has a NaN or infinite vertex coordinate");
-  for(const auto& polygon : polygons) {
-    if(polygon.size() < 3)
-      fail("'" + path + "' has a face with fewer than 3 vertices");
-    for(std::size_t v : polygon)
-      if(v >= points.size())
-        fail("'" + path + "' has a face referring to a missing vertex");
-  }
-  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-    fail("'" + path + "' is not a 2-manifold oriented mesh (non-manifold edge or vertex, or "
-         "inconsistent orientation)");
   Mesh mesh;
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  try {
+    triangulated = rsr_input::polygon_soup_to_triangle_mesh(points, polygons, "'" + path + "'", mesh);
+  } catch(const rsr_input::Input_error& e) {
+    fail(e.what());
+  }
   const std::vector<CGAL::IO::Color> colors = read_vertex_colors(path, points.size());
   if(!colors.empty()) {
     // the mesh's vertices are the points used by a face, in order
@@ -395,17 +377,6 @@ Mesh read_input(const std::string& path, bool& triangulated)
     for(std::size_t i = 0; i < points.size(); ++i)
       if(used[i])
         vertex_colors[*v++] = colors[i];
-  }
-  triangulated = !CGAL::is_triangle_mesh(mesh);
-  if(triangulated) {
-    bool all_triangulated = false;
-    try {
-      all_triangulated = PMP::triangulate_faces(mesh);
-    } catch(const std::exception&) {
-      all_triangulated = false;
-    }
-    if(!all_triangulated)
-      fan_triangulate(mesh);
   }
   return mesh;
 }

@@ -44,7 +44,8 @@ struct Statistics
   std::size_t boundary_corners = 0;
   /// border cycles of the input that no grid hyperplane crosses (a hole inside one
   /// cell): the output has no boundary for them, the face of the cell covers the hole.
-  /// Counted by the complete scan only (the seeded traversal never sees them).
+  /// The complete scan counts them all; the seeded traversal only those of components
+  /// in which it found nothing to trace (it never sees the others).
   std::size_t uncrossed_border_cycles = 0;
   /// output faces whose boundary visited a vertex twice, split by a chord
   std::size_t non_simple_faces = 0;

@@ -165,6 +165,7 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
                                        one_face_per_component(tm, face_index));
     for(auto f : seed_range)
       stats.seeds += tracer.seed_from(f) ? 1 : 0;
+    stats.uncrossed_border_cycles = tracer.number_of_border_cycles_of_empty_components();
   }
   stats.time_seeding_ms = milliseconds_since(start);
 

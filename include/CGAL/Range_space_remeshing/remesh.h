@@ -38,7 +38,9 @@ struct Remesh_statistics
 \ingroup PkgRangeSpaceRemeshingRef
 
 The whole pipeline: `primal_remesh()` of `tm`, `dualize()` of the result into
-`quads`, `collapse_quads()`, then `relax_on_tangent_planes()`.
+`quads`, `collapse_quads()`, then `relax_on_tangent_planes()`. When the cell size
+resolves nothing (an empty primal, or only pieces without a dual), `quads` is left
+as it was and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
 
 \param np the named parameters of `primal_remesh()` (`range_map`, `grid_spacing`,
   `grid_origin`, `seeding_method`, `seed_faces`, `maximum_number`,
@@ -83,15 +85,28 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
   const auto dual_in = parameters::dual_placement(placement, CGAL::parameters::vertex_normal_map(primal_normals));
   const auto dual_out = parameters::vertex_tangent_planes_map(
       planes, CGAL::parameters::vertex_normal_map(normals).vertex_point_map(out_vpm));
+  auto finish = [&] {
+    stats.time_total_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+  };
+  // Nothing resolved at this cell size (or only pieces without a dual): an empty
+  // result, which the statistics explain, rather than an error of a later stage.
   if constexpr(wants_colors) { // the primal carries colours only when they are wanted
     auto primal_colors = primal.add_property_map<typename Primal::Vertex_index, std::array<double, 3>>("v:color").first;
     stats.primal = primal_remesh(tm, primal, np, primal_out.vertex_color_map(primal_colors));
+    if(num_faces(primal) == 0)
+      return finish();
     stats.dual = dualize(primal, quads, dual_in.vertex_color_map(primal_colors),
                          dual_out.vertex_color_map(get_parameter(np_out, CGAL::internal_np::vertex_color_map)));
   } else {
     stats.primal = primal_remesh(tm, primal, np, primal_out);
+    if(num_faces(primal) == 0)
+      return finish();
     stats.dual = dualize(primal, quads, dual_in, dual_out);
   }
+  if(stats.dual.quads + stats.dual.non_quads == 0)
+    return finish();
 
   if(choose_parameter(get_parameter(np, internal_np::quad_collapse), true))
     stats.collapse = collapse_quads(
@@ -104,9 +119,7 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
         quads, parameters::vertex_tangent_planes_map(planes, CGAL::parameters::number_of_iterations(steps)
                                                                  .vertex_normal_map(normals)
                                                                  .vertex_point_map(out_vpm)));
-  stats.time_total_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  return stats;
+  return finish();
 }
 
 } // namespace Range_space_remeshing

@@ -198,10 +198,16 @@ public:
           faces_to_scan.push_back(n);
         }
     }
+    if(!found) // the whole component was scanned: its border cycles are all uncrossed
+      count_border_cycles_of(marked);
     for(std::uint32_t f : marked)
       seed_marks_[f] = 0;
     return found;
   }
+
+  /// Border cycles of the components in which `seed_from()` found nothing: all
+  /// uncrossed (the seeded mode cannot tell for the others).
+  std::size_t number_of_border_cycles_of_empty_components() const { return border_cycles_of_empty_components_; }
 
   // ---------------------------------------------------------------- tracing
   /// Traces every arc of every queued vertex; vertices met at arc ends are created
@@ -259,6 +265,21 @@ public:
 
 private:
   static constexpr std::uint32_t border = std::uint32_t(-1);
+
+  void count_border_cycles_of(const std::vector<std::uint32_t>& faces_of_component)
+  {
+    if(walked_border_.empty())
+      walked_border_.assign(3 * num_faces(tm_), 0); // once: by border_key()
+    for(std::uint32_t f : faces_of_component)
+      for(int e = 0; e < 3; ++e) {
+        if(records_[f].neighbour[e] != border || walked_border_[border_key({f, e})])
+          continue;
+        ++border_cycles_of_empty_components_;
+        const halfedge_descriptor start = opposite(halfedge_of({f, e}), tm_);
+        for(halfedge_descriptor c : CGAL::halfedges_around_face(start, tm_))
+          walked_border_[border_key(border_edge_of(opposite(c, tm_)))] = 1;
+      }
+  }
 
   // The part of the input the tracer reads, copied once per visited face into a
   // compact array: arcs cross each triangle several times, and chasing the
@@ -319,6 +340,7 @@ private:
     if(next(h[2], tm_) != h0)
       throw Remeshing_error("the input has a face that is not a triangle (face " +
                             std::to_string(face_id) + ")");
+    check_face_structure(f, face_id, h);
     for(int e = 0; e < 3; ++e) {
       const vertex_descriptor v = source(h[e], tm_);
       r.vertex[e] = std::uint32_t(get(vertex_index_, v));
@@ -336,6 +358,22 @@ private:
     recorded_[face_id] = 1;
     ++number_of_visited_faces_;
     return r;
+  }
+
+  /// What the walk relies on, checked once per visited face (so also lazily in the
+  /// seeded mode): the face's halfedges point back to it, their opposites to them, and
+  /// its three corners are distinct vertices.
+  void check_face_structure(face_descriptor f, std::uint32_t face_id,
+                            const std::array<halfedge_descriptor, 3>& h) const
+  {
+    for(int e = 0; e < 3; ++e)
+      if(face(h[e], tm_) != f || opposite(opposite(h[e], tm_), tm_) != h[e] ||
+         target(h[e], tm_) != source(h[(e + 1) % 3], tm_))
+        throw Remeshing_error("the input is not a valid halfedge structure around face " +
+                              std::to_string(face_id));
+    if(source(h[0], tm_) == source(h[1], tm_) || source(h[1], tm_) == source(h[2], tm_) ||
+       source(h[2], tm_) == source(h[0], tm_))
+      throw Remeshing_error("the input has a face with a repeated vertex (face " + std::to_string(face_id) + ")");
   }
 
   Triangle load(std::uint32_t face_id)
@@ -971,6 +1009,8 @@ private:
   std::size_t number_of_boundary_vertices_ = 0;
   std::size_t number_of_corners_ = 0;
   std::vector<std::uint8_t> seed_marks_;
+  std::vector<std::uint8_t> walked_border_; // by border_key(), for empty components
+  std::size_t border_cycles_of_empty_components_ = 0;
   std::size_t tracing_steps_ = 0;
 
   std::vector<Vertex> vertices_;

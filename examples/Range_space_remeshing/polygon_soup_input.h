@@ -1,0 +1,114 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Turns a polygon soup read from a file into a triangle mesh the remesher accepts,
+// or says in one line why it cannot. Shared by the command-line program and the
+// fuzz target, so that the fuzzer exercises the program's own input path.
+
+#ifndef RANGE_SPACE_REMESHING_EXAMPLES_POLYGON_SOUP_INPUT_H
+#define RANGE_SPACE_REMESHING_EXAMPLES_POLYGON_SOUP_INPUT_H
+
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <cmath>
+#include <cstddef>
+#include <istream>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace rsr_input {
+
+/// Why a soup is no usable mesh, in one line.
+struct Input_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/// Checks the header of a PLY file before CGAL's reader sees it: CGAL 5.5's reader
+/// reads out of bounds on a `property` line that comes before any `element` line
+/// (found by the fuzzer). Throws Input_error naming the file (`name`).
+inline void check_ply_header(std::istream& in, const std::string& name)
+{
+  std::string line;
+  bool has_element = false;
+  for(std::size_t number = 1; std::getline(in, line); ++number) {
+    std::istringstream words(line);
+    std::string keyword;
+    words >> keyword;
+    if(number == 1 && keyword != "ply")
+      throw Input_error(name + " is not a PLY file (no 'ply' on its first line)");
+    if(keyword == "end_header")
+      return;
+    if(keyword == "element")
+      has_element = true;
+    else if(keyword == "property" && !has_element)
+      throw Input_error(name + " has a PLY property before any element (line " + std::to_string(number) + ")");
+  }
+  throw Input_error(name + " has a PLY header without end_header");
+}
+
+/// Splits every face that is not a triangle into a fan: always possible, whatever
+/// the geometry (used where the constrained triangulation gives up).
+template <class Mesh>
+void fan_triangulate(Mesh& mesh)
+{
+  std::vector<typename boost::graph_traits<Mesh>::face_descriptor> polygons;
+  for(auto f : faces(mesh))
+    if(degree(f, mesh) > 3)
+      polygons.push_back(f);
+  for(auto f : polygons) {
+    auto h = halfedge(f, mesh);
+    while(degree(face(h, mesh), mesh) > 3)
+      h = prev(CGAL::Euler::split_face(h, next(next(h, mesh), mesh), mesh), mesh);
+  }
+}
+
+/// Builds `mesh` from the soup (`name` names it in messages): finite coordinates,
+/// faces of 3 or more existing vertices, an oriented 2-manifold (with or without
+/// border); polygons are triangulated. Returns whether any face was triangulated.
+/// The mesh's vertices are the points some face uses, in the soup's order.
+template <class Point, class Mesh>
+bool polygon_soup_to_triangle_mesh(const std::vector<Point>& points,
+                                   const std::vector<std::vector<std::size_t>>& polygons,
+                                   const std::string& name, Mesh& mesh)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  if(polygons.empty())
+    throw Input_error(name + " contains no face");
+  for(const auto& p : points)
+    if(!std::isfinite(p.x()) || !std::isfinite(p.y()) || !std::isfinite(p.z()))
+      throw Input_error(name + " has a NaN or infinite vertex coordinate");
+  for(const auto& polygon : polygons) {
+    if(polygon.size() < 3)
+      throw Input_error(name + " has a face with fewer than 3 vertices");
+    for(std::size_t v : polygon)
+      if(v >= points.size())
+        throw Input_error(name + " has a face referring to a missing vertex");
+  }
+  if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+    throw Input_error(name + " is not a 2-manifold oriented mesh (non-manifold edge or vertex, "
+                             "or inconsistent orientation)");
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  const bool triangulated = !CGAL::is_triangle_mesh(mesh);
+  if(triangulated) {
+    bool all_triangulated = false;
+    try {
+      all_triangulated = PMP::triangulate_faces(mesh);
+    } catch(const std::exception&) {
+      all_triangulated = false;
+    }
+    if(!all_triangulated)
+      fan_triangulate(mesh);
+  }
+  return triangulated;
+}
+
+} // namespace rsr_input
+
+#endif // RANGE_SPACE_REMESHING_EXAMPLES_POLYGON_SOUP_INPUT_H

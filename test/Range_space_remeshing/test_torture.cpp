@@ -1,0 +1,227 @@
+// Torture tests of the exact predicates and the tracer: inputs built to hit every
+// degenerate position at once. Random closed meshes snapped to the lattice (vertices
+// on grid planes, grid edges and grid vertices, zero-area triangles, coincident
+// vertices), voxel terrains whose faces lie in grid planes, a closed surface lying
+// entirely inside one grid plane, and maps with duplicated and constant coordinates.
+// For each: the invariants of DESIGN.md (valid manifold with the input's border
+// cycles, valence 4, one cell per face), determinism, and a valid dual pipeline.
+// Also the library's clean errors on structurally broken input.
+#include "test_support.h"
+
+#include <CGAL/Range_space_remeshing/remesh.h>
+
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <random>
+
+using namespace test;
+namespace params = CGAL::parameters;
+
+namespace {
+
+std::size_t cases_run = 0;
+std::size_t output_faces = 0; // over all complete-scan primal runs: the cases are not trivial
+
+/// (x, y, z) followed by the coordinates `extra` computes from them.
+template <int D, class Extra>
+struct Extended_map
+{
+  using key_type = Mesh::Vertex_index;
+  using value_type = std::array<double, D>;
+  using reference = value_type;
+  using category = boost::readable_property_map_tag;
+  const Mesh* mesh;
+  Extra extra;
+  friend value_type get(const Extended_map& f, key_type v)
+  {
+    const Point& p = f.mesh->point(v);
+    value_type x;
+    f.extra(p, x);
+    return x;
+  }
+};
+template <int D, class Extra>
+Extended_map<D, Extra> extended(const Mesh& mesh, Extra extra)
+{
+  return {&mesh, extra};
+}
+
+/// The invariants, in both seeding modes, twice each (same bytes), and the dual
+/// pipeline; `what` names the case in failure messages.
+template <class NP>
+void check_all(const std::string& what, const Mesh& input, const NP& np)
+{
+  ++cases_run;
+  const int failures_before = failures;
+  for(auto seeding : {RSR::Seeding_method::COMPLETE_SCAN, RSR::Seeding_method::SEEDED}) {
+    const auto with_seeding = np.seeding_method(seeding);
+    Mesh first, second;
+    remesh_and_check(input, first, with_seeding);
+    if(seeding == RSR::Seeding_method::COMPLETE_SCAN)
+      output_faces += num_faces(first);
+    RSR::primal_remesh(input, second, with_seeding);
+    CHECK(fingerprint(first) == fingerprint(second));
+  }
+  Mesh quads;
+  RSR::remesh(input, quads, np);
+  CHECK(CGAL::is_valid_polygon_mesh(quads));
+  if(failures != failures_before)
+    std::cout << "  ^ in case: " << what << std::endl;
+}
+
+/// Rounds every coordinate to a multiple of `step` (after a shift): vertices land on
+/// grid planes, edges and vertices; close vertices merge in position; triangles
+/// flatten to zero area. The combinatorics stay those of a closed manifold.
+Mesh snapped(Mesh m, double step, double shift)
+{
+  for(auto v : vertices(m)) {
+    const Point& p = m.point(v);
+    auto snap = [&](double x) { return step * std::round((x + shift) / step) - shift; };
+    m.point(v) = Point(snap(p.x()), snap(p.y()), snap(p.z()));
+  }
+  return m;
+}
+
+void test_snapped_meshes()
+{
+  std::mt19937 rng(2026);
+  std::uniform_real_distribution<double> unit(0., 1.);
+  const std::vector<Mesh> bases = {make_sphere(1.0, 2), make_torus(1.0, 0.35, 24, 12), make_genus_2(1),
+                                   make_ellipsoid(1.2, 0.7, 0.4, 2)};
+  for(int round = 0; round < 60; ++round) {
+    const Mesh& base = bases[round % bases.size()];
+    const double h = 0.15 + 0.35 * unit(rng);
+    const int per_cell = 1 + round % 4;             // vertices every 1/1 .. 1/4 cell
+    const double shift = (round % 3) * h / 2;       // on, or half a cell off, the lattice
+    const Mesh m = snapped(base, h / per_cell, shift);
+    const std::string what = "snapped #" + std::to_string(round) + " h=" + std::to_string(h);
+    check_all(what, m, params::grid_spacing(h));
+    // duplicated and constant coordinates: (x, y, z, x, c), c on and off a grid plane
+    const double c = (round % 2) ? 3 * h : 0.37 * h;
+    check_all(what + " (x,y,z,x,c)", m,
+              RSR::parameters::range_map(extended<5>(m, [c](const Point& p, std::array<double, 5>& x) {
+                                           x = {{p.x(), p.y(), p.z(), p.x(), c}};
+                                         }),
+                                         params::grid_spacing(h)));
+    // a map whose image is a line: every triangle degenerate in the range space
+    check_all(what + " (x,x,x)", m,
+              RSR::parameters::range_map(extended<3>(m, [](const Point& p, std::array<double, 3>& x) {
+                                           x = {{p.x(), p.x(), p.x()}};
+                                         }),
+                                         params::grid_spacing(h)));
+  }
+}
+
+std::size_t number_of_squares(const std::set<std::array<int, 3>>& voxels)
+{
+  std::size_t squares = 0;
+  for(const auto& cell : voxels)
+    for(int axis = 0; axis < 3; ++axis)
+      for(int dir : {-1, 1}) {
+        std::array<int, 3> neighbour = cell;
+        neighbour[axis] += dir;
+        squares += !voxels.count(neighbour);
+      }
+  return squares;
+}
+
+/// Boundary of columns of voxels of random heights: every face in a grid plane when
+/// the voxel size is a multiple of the cell size.
+void test_voxel_terrains()
+{
+  std::mt19937 rng(7);
+  std::uniform_int_distribution<int> height(1, 3);
+  int made = 0;
+  for(int attempt = 0; made < 12 && attempt < 200; ++attempt) {
+    std::set<std::array<int, 3>> voxels;
+    for(int x = 0; x < 4; ++x)
+      for(int y = 0; y < 3; ++y)
+        for(int z = 0, top = height(rng); z < top; ++z)
+          voxels.insert({x, y, z});
+    const double h = 0.5;
+    const double scale = h * (1 + made % 2);
+    Mesh m = make_voxel_surface(voxels, scale);
+    if(!CGAL::is_valid_polygon_mesh(m) || !CGAL::is_closed(m) || num_faces(m) != 2 * number_of_squares(voxels))
+      continue; // an edge shared by two voxels only: not a manifold surface
+    ++made;
+    const std::string what = "voxel terrain #" + std::to_string(made);
+    check_all(what, m, params::grid_spacing(h));
+    const double half = h / 2;
+    check_all(what + " (origin at half a cell)", m,
+              RSR::parameters::grid_origin(RSR::Range_space_traits<3>::Point_d{{half, 0., half}},
+                                           params::grid_spacing(h)));
+  }
+  CHECK(made >= 6);
+}
+
+/// A closed surface of zero volume inside the grid plane z = 0: the two sides of a
+/// square glued along its border, every vertex on grid lines or half-way between.
+void test_flat_pillow()
+{
+  const int n = 6;
+  std::vector<Point> points;
+  std::vector<std::array<std::size_t, 3>> triangles;
+  std::vector<std::size_t> top((n + 1) * (n + 1)), bottom((n + 1) * (n + 1));
+  auto id = [&](int r, int c) { return std::size_t(r * (n + 1) + c); };
+  for(int r = 0; r <= n; ++r)
+    for(int c = 0; c <= n; ++c) {
+      top[id(r, c)] = points.size();
+      points.emplace_back(0.25 * c, 0.25 * r, 0.);
+      const bool border = r == 0 || c == 0 || r == n || c == n;
+      bottom[id(r, c)] = border ? top[id(r, c)] : points.size();
+      if(!border)
+        points.emplace_back(0.25 * c, 0.25 * r, 0.); // the same position, another vertex
+    }
+  // each cell split by its centre (one vertex per side): no triangle has only border
+  // vertices, which would be glued to its mirror image
+  for(int r = 0; r < n; ++r)
+    for(int c = 0; c < n; ++c) {
+      const std::array<std::size_t, 4> ring = {{id(r, c), id(r, c + 1), id(r + 1, c + 1), id(r + 1, c)}};
+      const std::size_t top_centre = points.size(), bottom_centre = points.size() + 1;
+      points.emplace_back(0.25 * (c + 0.5), 0.25 * (r + 0.5), 0.);
+      points.emplace_back(0.25 * (c + 0.5), 0.25 * (r + 0.5), 0.);
+      for(int k = 0; k < 4; ++k) {
+        const std::size_t p = ring[k], q = ring[(k + 1) % 4];
+        triangles.push_back({top[p], top[q], top_centre});
+        triangles.push_back({bottom[q], bottom[p], bottom_centre});
+      }
+    }
+  Mesh m;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, m);
+  CHECK(CGAL::is_valid_polygon_mesh(m));
+  CHECK(CGAL::is_closed(m));
+  for(double h : {0.25, 0.5, 0.3})
+    check_all("flat pillow h=" + std::to_string(h), m, params::grid_spacing(h));
+}
+
+/// Structurally broken input must give a Remeshing_error, not a crash.
+void test_broken_structure()
+{
+  Mesh m = make_sphere(1.0, 1);
+  // a face whose halfedges point to another face
+  auto h = halfedge(*faces(m).begin(), m);
+  m.set_face(next(h, m), *std::next(faces(m).begin(), 5));
+  bool thrown = false;
+  try {
+    Mesh out;
+    RSR::primal_remesh(m, out, params::grid_spacing(0.3));
+  } catch(const RSR::Remeshing_error& e) {
+    thrown = true;
+    std::cout << "broken structure: " << e.what() << std::endl;
+  }
+  CHECK(thrown);
+}
+
+} // namespace
+
+int main()
+{
+  test_snapped_meshes();
+  test_voxel_terrains();
+  test_flat_pillow();
+  test_broken_structure();
+  std::cout << cases_run << " torture cases, each in both seeding modes twice and through the dual; "
+            << output_faces << " primal faces in all (complete scans)" << std::endl;
+  CHECK(output_faces > 20 * cases_run);
+  return report("test_torture");
+}
