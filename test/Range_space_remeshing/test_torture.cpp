@@ -11,6 +11,7 @@
 #include <CGAL/Range_space_remeshing/remesh.h>
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <random>
 
@@ -194,6 +195,18 @@ void test_flat_pillow()
     check_all("flat pillow h=" + std::to_string(h), m, params::grid_spacing(h));
 }
 
+/// A Surface_mesh with removed, not yet collected, elements: its indices have gaps.
+void test_mesh_with_garbage()
+{
+  Mesh m = make_sphere(1.0, 2);
+  CGAL::Euler::remove_face(halfedge(*std::next(faces(m).begin(), 17), m), m);
+  CHECK(m.has_garbage());
+  check_all("sphere with a removed face, garbage kept", m, params::grid_spacing(0.2));
+  Mesh out;
+  RSR::primal_remesh(m, out, params::grid_spacing(0.05));
+  CHECK_EQ(number_of_border_cycles(out), std::size_t(1));
+}
+
 /// Structurally broken input must give a Remeshing_error, not a crash.
 void test_broken_structure()
 {
@@ -219,6 +232,7 @@ int main()
   test_snapped_meshes();
   test_voxel_terrains();
   test_flat_pillow();
+  test_mesh_with_garbage();
   test_broken_structure();
   std::cout << cases_run << " torture cases, each in both seeding modes twice and through the dual; "
             << output_faces << " primal faces in all (complete scans)" << std::endl;
