@@ -1,5 +1,5 @@
 # Tests of the command-line program: run with
-#   cmake -DCLI=... -DMESH_DIR=... -DWORK_DIR=... -P test_command_line.cmake
+#   cmake -DCLI=... -DCLI_SOURCE=... -DMESH_DIR=... -DWORK_DIR=... -P test_command_line.cmake
 cmake_minimum_required(VERSION 3.19)
 
 set(failures 0)
@@ -37,10 +37,23 @@ set(elephant ${MESH_DIR}/elephant.off)
 
 # ------------------------------------------------------------------ success
 run(0 NONE --help)
-if(NOT out MATCHES "--target-vertices")
-  message(SEND_ERROR "--help does not document --target-vertices")
+# every option the program parses (a quoted "--name" in its source) is in --help
+file(READ ${CLI_SOURCE} source)
+string(REGEX MATCHALL "\"--[a-z-]+\"" parsed "${source}")
+list(REMOVE_DUPLICATES parsed)
+list(LENGTH parsed number_of_options)
+if(number_of_options LESS 10)
+  message(SEND_ERROR "found only ${number_of_options} options in ${CLI_SOURCE}")
   math(EXPR failures "${failures} + 1")
 endif()
+foreach(option ${parsed})
+  string(REPLACE "\"" "" option "${option}")
+  string(FIND "${out}" "${option}" where)
+  if(where EQUAL -1)
+    message(SEND_ERROR "--help does not document ${option}")
+    math(EXPR failures "${failures} + 1")
+  endif()
+endforeach()
 
 run(0 a.off --stats --cell-size 0.01 ${elephant} a.off)
 string(JSON output_vertices GET "${out}" output_vertices)
