@@ -78,9 +78,11 @@ struct Dual_statistics
   /// pieces whose dual cannot be a polygon mesh (e.g. a pillow of two faces whose
   /// vertices all have valence 2), removed
   std::size_t dropped_pieces = 0;
-  /// pairs of distinct edges joining the same two vertices (where two primal faces
-  /// share two edges, at coarse cell sizes): valid in the halfedge structure, but a
-  /// file format that stores faces as vertex lists cannot keep them apart
+  /// pairs of distinct edges joining the same two vertices left in the dual (where two
+  /// primal faces share two edges, at coarse cell sizes, one edge of each pair is
+  /// rotated inside its two quads; this counts the pairs no rotation could undo):
+  /// valid in the halfedge structure, but a file format that stores faces as vertex
+  /// lists cannot keep them apart
   std::size_t parallel_edges = 0;
   double time_ms = 0;
 };

@@ -100,6 +100,73 @@ std::size_t number_of_parallel_edges(const Mesh& mesh)
   return parallel;
 }
 
+/// Parallel edges (two edges joining the same two vertices: where two primal faces
+/// share two edges, which coarse cells give around thin parts) cannot be stored in
+/// face-list files. Each pair is undone by rotating one of its edges inside the
+/// hexagon of its two quads: the faces stay quads, and the new diagonal is the
+/// shorter one that joins two vertices not yet adjacent. Returns the pairs left.
+template <class Mesh, class VertexPointMap>
+std::size_t rotate_parallel_edges(Mesh& mesh, VertexPointMap vpm)
+{
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  std::vector<halfedge_descriptor> parallel; // one halfedge of each pair's edges
+  std::vector<std::pair<vertex_descriptor, halfedge_descriptor>> neighbours;
+  for(vertex_descriptor v : vertices(mesh)) {
+    neighbours.clear();
+    for(halfedge_descriptor h : CGAL::halfedges_around_source(v, mesh)) {
+      const vertex_descriptor w = target(h, mesh);
+      for(const auto& [u, g] : neighbours)
+        if(u == w && v < w) {
+          parallel.push_back(g);
+          parallel.push_back(h);
+        }
+      neighbours.emplace_back(w, h);
+    }
+  }
+  auto length = [&](vertex_descriptor x, vertex_descriptor y) {
+    const Vec3 d = difference(to_vec3(get(vpm, x)), to_vec3(get(vpm, y)));
+    return dot(d, d);
+  };
+  std::vector<std::pair<vertex_descriptor, vertex_descriptor>> rotated_pairs;
+  for(std::size_t i = 0; i < parallel.size(); i += 2) {
+    const vertex_descriptor u = source(parallel[i], mesh), w = target(parallel[i], mesh);
+    const std::pair<vertex_descriptor, vertex_descriptor> pair = u < w ? std::make_pair(u, w) : std::make_pair(w, u);
+    if(std::find(rotated_pairs.begin(), rotated_pairs.end(), pair) != rotated_pairs.end())
+      continue; // a third edge between the same vertices: one rotation per pair
+    for(halfedge_descriptor g : {parallel[i], parallel[i + 1]}) {
+      const halfedge_descriptor o = opposite(g, mesh);
+      if(is_border(g, mesh) || is_border(o, mesh) || degree(face(g, mesh), mesh) != 4 ||
+         degree(face(o, mesh), mesh) != 4)
+        continue;
+      // the hexagon a -> e -> f -> b -> c -> d once g = (a -> b) is removed
+      const halfedge_descriptor into_c = next(g, mesh), into_d = next(into_c, mesh);
+      const halfedge_descriptor into_e = next(o, mesh), into_f = next(into_e, mesh);
+      const vertex_descriptor a = source(g, mesh), b = target(g, mesh), c = target(into_c, mesh),
+                              d = target(into_d, mesh), e = target(into_e, mesh), f = target(into_f, mesh);
+      const std::array<vertex_descriptor, 6> hexagon = {{a, e, f, b, c, d}};
+      // a and b lose an edge: they must keep three, and stay off the border
+      bool simple = face(g, mesh) != face(o, mesh) && degree(a, mesh) >= 4 && degree(b, mesh) >= 4 &&
+                    !is_border(a, mesh) && !is_border(b, mesh);
+      for(std::size_t k = 0; k < 6 && simple; ++k)
+        simple = std::count(hexagon.begin(), hexagon.end(), hexagon[k]) == 1;
+      if(!simple)
+        continue; // the two quads share more than the edge: no hexagon to rotate in
+      const bool ec = !halfedge(e, c, mesh).second, fd = !halfedge(f, d, mesh).second;
+      if(!ec && !fd)
+        continue;
+      CGAL::Euler::join_face(g, mesh);
+      if(ec && (!fd || length(e, c) <= length(f, d)))
+        CGAL::Euler::split_face(into_e, into_c, mesh);
+      else
+        CGAL::Euler::split_face(into_f, into_d, mesh);
+      rotated_pairs.push_back(pair);
+      break;
+    }
+  }
+  return number_of_parallel_edges(mesh);
+}
+
 /// Whether joining the two faces of halfedge h gives a face that visits each vertex
 /// once: the faces must be distinct and share no vertex but the ends of h.
 template <class Mesh>
@@ -345,8 +412,7 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     if constexpr(has_normals)
       return internal::to_vec3(get(normal_map, v));
     else
-      return internal::to_vec3(CGAL::Polygon_mesh_processing::compute_vertex_normal(
-          v, primal, CGAL::parameters::vertex_point_map(vpm)));
+      return internal::robust_vertex_normal(v, primal, vpm);
   };
 
   using Out_VPM = typename GetVertexPointMap<QuadMesh, NamedParametersOut>::type;
@@ -615,10 +681,10 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     --stats.dual_faces;
   }
   stats.dropped_pieces = faces_without_dual + internal::remove_pieces_with_non_simple_faces(quads, stats.dual_faces);
+  stats.parallel_edges = internal::rotate_parallel_edges(quads, out_vpm);
   internal::collect_garbage_if_any(quads);
   for(auto f : faces(quads))
     (degree(f, quads) == 4 ? stats.quads : stats.non_quads) += 1;
-  stats.parallel_edges = internal::number_of_parallel_edges(quads);
   stats.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }

@@ -11,11 +11,15 @@
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
+#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
+#include <CGAL/assertions_behaviour.h>
+#include <CGAL/exceptions.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -41,6 +45,38 @@ std::size_t index_bound(const Range& range, IndexMap index)
   for(auto x : range)
     bound = (std::max)(bound, std::size_t(get(index, x)) + 1);
   return bound;
+}
+
+/// The unit normal of vertex v: CGAL's `compute_vertex_normal()` where it works; on
+/// faces so degenerate that its construction fails (an assertion on a circumcentre of
+/// underflowing coordinates, found by the fuzzer) or gives a non-finite vector, the
+/// sum of the incident faces' area vectors, normalised (zero if they all vanish).
+template <class PolygonMesh, class VertexPointMap>
+Vec3 robust_vertex_normal(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                          const PolygonMesh& mesh, VertexPointMap vpm)
+{
+  try {
+    const auto n = CGAL::Polygon_mesh_processing::compute_vertex_normal(
+        v, mesh, CGAL::parameters::vertex_point_map(vpm));
+    const Vec3 result = {{CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z())}};
+    if(std::isfinite(result[0]) && std::isfinite(result[1]) && std::isfinite(result[2]))
+      return result;
+  } catch(const CGAL::Failure_exception&) {
+  }
+  std::vector<Vec3> corners;
+  Vec3 sum = {{0, 0, 0}};
+  for(auto h : CGAL::halfedges_around_target(halfedge(v, mesh), mesh)) {
+    if(is_border(h, mesh))
+      continue;
+    corners.clear();
+    for(auto w : CGAL::vertices_around_face(h, mesh))
+      corners.push_back(to_vec3(get(vpm, w)));
+    const Vec3 area = newell_normal(corners);
+    for(int d = 0; d < 3; ++d)
+      sum[d] += area[d];
+  }
+  const Vec3 unit = normalized(sum);
+  return std::isfinite(unit[0]) && std::isfinite(unit[1]) && std::isfinite(unit[2]) ? unit : Vec3{{0, 0, 0}};
 }
 
 /// The tangent planes of a mesh that comes without any (one it did not produce): for

@@ -23,6 +23,8 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
+
 #include <cmath>
 #include <vector>
 
@@ -49,9 +51,7 @@ public:
       known_.assign(num_vertices(tm_), 0);
     }
     if(!known_[id]) {
-      const auto n = CGAL::Polygon_mesh_processing::compute_vertex_normal(
-          v, tm_, CGAL::parameters::vertex_point_map(vpm_));
-      normals_[id] = {{CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z())}};
+      normals_[id] = robust_vertex_normal(v, tm_, vpm_);
       known_[id] = 1;
     }
     return normals_[id];

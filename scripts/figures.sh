@@ -1,0 +1,72 @@
+#!/usr/bin/env bash
+# Renders the manual's figures from real runs of the command-line program and the
+# examples (f3d, headless under xvfb-run): doc/Range_space_remeshing/fig/*.png.
+# The meshes behind them stay in build/figures/.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+bash scripts/install_dependencies.sh f3d xvfb xauth
+export CCACHE_DIR="${CCACHE_DIR:-$HOME/.cache/ccache}"
+export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2" \
+      -DBUILD_TESTING=ON -DRANGE_SPACE_REMESHING_BUILD_EXAMPLES=ON > /dev/null
+cmake --build build -j "$(nproc)" --target range_space_remesh color_map_example > /dev/null
+
+work=build/figures
+figures=doc/Range_space_remeshing/fig
+mkdir -p "$work" "$figures"
+meshes="$work/meshes"
+mkdir -p "$meshes"
+for mesh in elephant fandisk elephant-with-holes; do
+  [ -f "$meshes/$mesh.off" ] || tar -xzf /usr/share/doc/libcgal-dev/data.tar.gz -O "data/meshes/$mesh.off" > "$meshes/$mesh.off"
+done
+cli=build/bin/range_space_remesh
+
+# render MESH PNG [f3d options...]: a 640 x 640 picture with edges, light background
+render() {
+  local mesh="$1" png="$2"
+  shift 2
+  xvfb-run -a f3d --output="$figures/$png" --resolution=640,640 --edges --bg-color=1,1,1 \
+    --color=0.85,0.85,0.8 --up=+Y "$@" "$mesh" > /dev/null 2>&1
+  echo "$figures/$png"
+}
+# remesh NAME INPUT [options...]: the CLI's output in $work/NAME.off, its stats in NAME.json
+remesh() {
+  local name="$1" input="$2"
+  shift 2
+  "$cli" --stats "$@" "$input" "$work/$name.off" > "$work/$name.json"
+}
+
+elephant="$meshes/elephant.off"
+render "$elephant" input_elephant.png
+# the paper's figure 2: primal, dual at two resolutions, Gauss map, R^6 from uniform
+# to anisotropic
+remesh primal_elephant "$elephant" --output primal --cell-size 0.02
+render "$work/primal_elephant.off" primal_elephant.png
+remesh dual_elephant_coarse "$elephant" --cell-size 0.018
+render "$work/dual_elephant_coarse.off" dual_elephant_coarse.png
+remesh dual_elephant_fine "$elephant" --cell-size 0.01
+render "$work/dual_elephant_fine.off" dual_elephant_fine.png
+remesh gauss_elephant "$elephant" --map gauss --cell-size 0.3 --absolute
+render "$work/gauss_elephant.off" gauss_elephant.png
+for weight in 0 0.02 0.05; do
+  remesh "r6_elephant_$weight" "$elephant" --map position-normal --normal-weight "$weight" --cell-size 0.02
+  render "$work/r6_elephant_$weight.off" "r6_elephant_$weight.png"
+done
+# the paper's figure 1: the stages of the pipeline on fandisk
+fandisk="$meshes/fandisk.off"
+remesh stage_primal "$fandisk" --output primal --cell-size 0.025
+remesh stage_dual "$fandisk" --no-collapse --relax 0 --cell-size 0.025
+remesh stage_collapse "$fandisk" --relax 0 --cell-size 0.025
+remesh stage_relax "$fandisk" --cell-size 0.025
+for stage in primal dual collapse relax; do
+  render "$work/stage_$stage.off" "stage_$stage.png" --camera-azimuth-angle=30 --camera-elevation-angle=20
+done
+# R^9: the colour example's output (red/white boundary at mid-height), direct colours
+(cd "$work" && ../bin/color_map_example "../../$elephant" > /dev/null)
+render "$work/colored.ply" colour_elephant.png --scalars --comp=-2
+# a surface with 106 holes
+holes="$meshes/elephant-with-holes.off"
+render "$holes" input_elephant_with_holes.png
+remesh holes "$holes" --cell-size 0.01
+render "$work/holes.off" dual_elephant_with_holes.png
