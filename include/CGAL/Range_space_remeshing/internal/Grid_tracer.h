@@ -305,27 +305,37 @@ private:
   };
 
   // -------------------------------------------------------------- the lazy map
+  // The check is on every corner of every loaded triangle: kept small and inlined,
+  // with the evaluation of the map (once per vertex, and as large as the map's
+  // code, lazy normals included) out of line.
   std::size_t u(std::uint32_t id)
   {
     CGAL_assertion(id < mapped_.size());
-    if(!mapped_[id]) {
-      const Point_d f = get(range_map_, vertex_of_id_[id]);
-      Point_d& x = mapped_vertices_[id].u;
-      Levels& c = mapped_vertices_[id].ceiling;
-      for(int q = 0; q < D; ++q) {
-        if(!std::isfinite(f[q]))
-          throw Remeshing_error("the range map gives a NaN or infinite value at input vertex " +
-                                std::to_string(id));
-        x[q] = (f[q] - origin_[q]) / cell_size_;
-        if(!(std::abs(x[q]) < maximum_lattice_coordinate))
-          throw Remeshing_error("the cell size is too small for the range of the map: "
-                                "more than 2^29 cells along one axis");
-        c[q] = ceil_to_int(x[q]);
-      }
-      mapped_[id] = 1;
-      ++number_of_mapped_;
-    }
+    if(!mapped_[id])
+      map_vertex(id);
     return id;
+  }
+
+#if defined(__GNUC__)
+  __attribute__((noinline))
+#endif
+  void map_vertex(std::uint32_t id)
+  {
+    const Point_d f = get(range_map_, vertex_of_id_[id]);
+    Point_d& x = mapped_vertices_[id].u;
+    Levels& c = mapped_vertices_[id].ceiling;
+    for(int q = 0; q < D; ++q) {
+      if(!std::isfinite(f[q]))
+        throw Remeshing_error("the range map gives a NaN or infinite value at input vertex " +
+                              std::to_string(id));
+      x[q] = (f[q] - origin_[q]) / cell_size_;
+      if(!(std::abs(x[q]) < maximum_lattice_coordinate))
+        throw Remeshing_error("the cell size is too small for the range of the map: "
+                              "more than 2^29 cells along one axis");
+      c[q] = ceil_to_int(x[q]);
+    }
+    mapped_[id] = 1;
+    ++number_of_mapped_;
   }
 
   const Face_record& record(std::uint32_t face_id)
