@@ -150,8 +150,8 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
   if(!seeded) {
     // Refuse before building anything when the output would exceed the cap (the
     // estimate maps every vertex, which the scan needs anyway).
-    const double expected = tracer.expected_number_of_vertices();
-    if(expected > double(maximum_vertices))
+    double expected = 0;
+    if(tracer.expected_number_of_vertices_exceeds(double(maximum_vertices), expected))
       throw Remeshing_error("the output would have about " + std::to_string(std::llround(expected)) +
                             " vertices, more than the cap of " + std::to_string(maximum_vertices) +
                             ": the cell size is too small for this input");

@@ -173,6 +173,34 @@ public:
     return expected;
   }
 
+  /// Whether `expected_number_of_vertices()` exceeds `cap` (then stored in
+  /// `expected`), decided in O(D) per face instead of O(D^2) where it cannot: with
+  /// B = b - a, C = c - a, each term |B_i C_j - B_j C_i| <= |B_i| |C_j| + |B_j| |C_i|,
+  /// so the sum over i < j is at most (sum |B_i|) (sum |C_j|). The estimate itself is
+  /// computed only when this bound, with a wide margin for rounding, reaches the cap.
+  /// Maps the vertices in the same order as `expected_number_of_vertices()`.
+  bool expected_number_of_vertices_exceeds(double cap, double& expected)
+  {
+    double bound = 0;
+    for(face_descriptor f : faces(tm_)) {
+      const std::uint32_t face_id = std::uint32_t(get(face_index_, f));
+      face_of_id_[face_id] = f;
+      const Triangle t = load(face_id);
+      const Point_d &a = *t.p[0], &b = *t.p[1], &c = *t.p[2];
+      double sum_b = 0, sum_c = 0;
+      for(int q = 0; q < D; ++q) {
+        sum_b += std::abs(b[q] - a[q]);
+        sum_c += std::abs(c[q] - a[q]);
+      }
+      bound += 0.5 * sum_b * sum_c;
+    }
+    expected = bound;
+    if(!(1.01 * bound >= cap))
+      return false;
+    expected = expected_number_of_vertices();
+    return expected > cap;
+  }
+
   /// Scans the faces reachable from `seed` across edges, nearest first, until one
   /// holding an intersection vertex is found. Returns false if there is none.
   bool seed_from(face_descriptor seed)
