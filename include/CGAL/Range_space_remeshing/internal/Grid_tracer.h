@@ -746,6 +746,11 @@ private:
       lo[T] = v.cell[T] - 1;
       hi[T] = v.cell[T];
     }
+    std::array<double, D> lo_wall, hi_wall;
+    for(int q = 0; q < D; ++q) {
+      lo_wall[q] = double(lo[q]);
+      hi_wall[q] = double(hi[q]);
+    }
 
     std::uint32_t f = v.face_id;
     const std::size_t maximum_steps = num_faces(tm_) + 1;
@@ -759,16 +764,27 @@ private:
       const Point_d& b = *t.p[(e + 1) % 3];
 
       const double t_exit = Predicates::crossing_parameter(a, b, P, double(level));
+      // An axis in which both ends of the exit edge lie strictly between the walls
+      // (ceiling = hi: lo < u <= hi, strictly inside the perturbed walls) has the
+      // crossing point, between them, inside too: crossing_slab_side() would return
+      // 0. That leaves out most axes, in one pass over the integer levels (with the
+      // walls of the first triangle kept: without one, an axis inside stays inside).
+      const Levels& ca = *t.c[e];
+      const Levels& cb = *t.c[(e + 1) % 3];
+      std::uint32_t candidates = 0;
+      for(int l = 0; l < D; ++l)
+        candidates |= std::uint32_t((ca[l] != hi[l]) | (cb[l] != hi[l])) << l;
+      candidates &= ~(std::uint32_t(1) << P);
       Wall first;
       for(int l = 0; l < D; ++l) {
-        if(l == P)
+        if(!((candidates >> l) & 1))
           continue;
         // In the first triangle the arc cannot cross back the wall it starts on.
         const bool skip_lo = (step == 0 && l == T && dir > 0);
         const bool skip_hi = (step == 0 && l == T && dir < 0);
         const int where = predicates_.crossing_slab_side(
-            a, b, P, level, t_exit, l, skip_lo ? -infinity : double(lo[l]),
-            skip_hi ? infinity : double(hi[l]));
+            a, b, P, level, t_exit, l, skip_lo ? -infinity : lo_wall[l],
+            skip_hi ? infinity : hi_wall[l]);
         if(where == 0)
           continue;
         const Wall crossed = where < 0 ? Wall{l, lo[l], -1} : Wall{l, hi[l], +1};
