@@ -74,6 +74,19 @@ struct Intersection_vertex
 // slots of a boundary vertex
 constexpr int forward_slot = 0, boundary_arc_slot = 1, backward_slot = 2;
 
+/// Index of the lowest set bit of x != 0.
+inline int lowest_set_bit(std::uint32_t x)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  return __builtin_ctz(x);
+#else
+  int i = 0;
+  for(; !(x & 1); x >>= 1)
+    ++i;
+  return i;
+#endif
+}
+
 /// std::ceil for |x| < 2^31, without a library call.
 inline std::int32_t ceil_to_int(double x)
 {
@@ -776,9 +789,8 @@ private:
         candidates |= std::uint32_t((ca[l] != hi[l]) | (cb[l] != hi[l])) << l;
       candidates &= ~(std::uint32_t(1) << P);
       Wall first;
-      for(int l = 0; l < D; ++l) {
-        if(!((candidates >> l) & 1))
-          continue;
+      for(; candidates != 0; candidates &= candidates - 1) {
+        const int l = lowest_set_bit(candidates);
         // In the first triangle the arc cannot cross back the wall it starts on.
         const bool skip_lo = (step == 0 && l == T && dir > 0);
         const bool skip_hi = (step == 0 && l == T && dir < 0);
