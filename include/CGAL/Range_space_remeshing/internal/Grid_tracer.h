@@ -137,32 +137,10 @@ public:
     const std::uint32_t face_id = std::uint32_t(get(face_index_, f));
     face_of_id_[face_id] = f;
     const Triangle t = load(face_id);
-    std::array<std::int32_t, D> first, last; // lattice levels strictly crossed, per axis
-    int crossed_axes[D];
-    int number_of_crossed_axes = 0;
-    for(int q = 0; q < D; ++q) {
-      // level k + eps lies strictly between lo and hi iff ceil(lo) <= k <= ceil(hi) - 1
-      first[q] = (std::min)({(*t.c[0])[q], (*t.c[1])[q], (*t.c[2])[q]});
-      last[q] = (std::max)({(*t.c[0])[q], (*t.c[1])[q], (*t.c[2])[q]}) - 1;
-      if(first[q] <= last[q])
-        crossed_axes[number_of_crossed_axes++] = q;
-    }
-    for(int a = 0; a < number_of_crossed_axes; ++a)
-      for(int b = a + 1; b < number_of_crossed_axes; ++b) {
-        const int i = crossed_axes[a], j = crossed_axes[b];
-        for(std::int32_t k = first[i]; k <= last[i]; ++k) {
-          // Only the lattice points near the column x_i = k of the projected triangle
-          // are candidates: the work is proportional to its area, not its bounding box.
-          std::int32_t m_first = first[j], m_last = last[j];
-          column_range(t, i, j, k, m_first, m_last);
-          for(std::int32_t m = m_first; m <= m_last; ++m) {
-            const int o = predicates_.grid_edge_orientation(*t.p[0], *t.p[1], *t.p[2], i, j,
-                                                            double(k), double(m));
-            if(o != 0)
-              find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
-          }
-        }
-      }
+    // Most triangles lie in one lattice cell (equal ceilings at the three corners):
+    // no lattice level is crossed, so there is no intersection vertex to look for.
+    if(!(*t.c[0] == *t.c[1] && *t.c[1] == *t.c[2]))
+      scan_crossed_levels(t);
     for(int e = 0; e < 3; ++e)
       if(records_[face_id].neighbour[e] == border)
         border_crossings(face_id, e);
@@ -438,6 +416,38 @@ private:
       t.c[e] = &mapped_vertices_[id].ceiling;
     }
     return t;
+  }
+
+  /// The intersection vertices of the triangle: the grid edges {x_i = k, x_j = m}
+  /// of the levels it strictly crosses, tested exactly (see `scan_face()`).
+  void scan_crossed_levels(const Triangle& t)
+  {
+    std::array<std::int32_t, D> first, last; // lattice levels strictly crossed, per axis
+    int crossed_axes[D];
+    int number_of_crossed_axes = 0;
+    for(int q = 0; q < D; ++q) {
+      // level k + eps lies strictly between lo and hi iff ceil(lo) <= k <= ceil(hi) - 1
+      first[q] = (std::min)({(*t.c[0])[q], (*t.c[1])[q], (*t.c[2])[q]});
+      last[q] = (std::max)({(*t.c[0])[q], (*t.c[1])[q], (*t.c[2])[q]}) - 1;
+      if(first[q] <= last[q])
+        crossed_axes[number_of_crossed_axes++] = q;
+    }
+    for(int a = 0; a < number_of_crossed_axes; ++a)
+      for(int b = a + 1; b < number_of_crossed_axes; ++b) {
+        const int i = crossed_axes[a], j = crossed_axes[b];
+        for(std::int32_t k = first[i]; k <= last[i]; ++k) {
+          // Only the lattice points near the column x_i = k of the projected triangle
+          // are candidates: the work is proportional to its area, not its bounding box.
+          std::int32_t m_first = first[j], m_last = last[j];
+          column_range(t, i, j, k, m_first, m_last);
+          for(std::int32_t m = m_first; m <= m_last; ++m) {
+            const int o = predicates_.grid_edge_orientation(*t.p[0], *t.p[1], *t.p[2], i, j,
+                                                            double(k), double(m));
+            if(o != 0)
+              find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
+          }
+        }
+      }
   }
 
   /// Narrows [m_first, m_last] to the levels of axis j near the segment where the
