@@ -47,7 +47,7 @@ remesh dual_elephant_coarse "$elephant" --cell-size 0.018
 render "$work/dual_elephant_coarse.off" dual_elephant_coarse.png
 remesh dual_elephant_fine "$elephant" --cell-size 0.01
 render "$work/dual_elephant_fine.off" dual_elephant_fine.png
-remesh gauss_elephant "$elephant" --map gauss --cell-size 0.3 --absolute
+remesh gauss_elephant "$elephant" --map gauss --cell-size 0.2 --absolute
 render "$work/gauss_elephant.off" gauss_elephant.png
 for weight in 0 0.02 0.05; do
   remesh "r6_elephant_$weight" "$elephant" --map position-normal --normal-weight "$weight" --cell-size 0.02
