@@ -188,6 +188,14 @@ void check_dual_pipeline(const Open_case& c)
   const double dual_border = border_hausdorff(c.mesh, quads) / c.h;
 
   const auto fixed_border = border_points(quads);
+  // a mesh from elsewhere need not keep its border vertices' halfedges on the border
+  // (a collapse around such a vertex once left it pointing at a removed halfedge)
+  for(auto v : vertices(quads))
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, quads), quads))
+      if(!CGAL::is_border(source(h, quads), quads)) { // from inside: the edge a collapse can remove
+        quads.set_halfedge(v, h);
+        break;
+      }
   const auto collapse = RSR::collapse_quads(
       quads, RSR::parameters::vertex_tangent_planes_map(planes, params::vertex_normal_map(dual_normals)));
   CHECK(CGAL::is_valid_polygon_mesh(quads));

@@ -61,6 +61,10 @@ public:
     for(vertex_descriptor v : vertices(mesh_)) {
       valences_[index(v)] = int(degree(v, mesh_));
       on_border_[index(v)] = bool(is_border(v, mesh_));
+      // a border vertex keeps its border halfedge, which no collapse removes (see
+      // set_inner_halfedge()); meshes from elsewhere need not point there yet
+      if(on_border_[index(v)])
+        set_halfedge(v, *is_border(v, mesh_), mesh_);
     }
   }
 
