@@ -17,29 +17,6 @@ namespace params = CGAL::parameters;
 using RSR::parameters::range_map;
 using RSR::parameters::grid_origin;
 
-// f(p) = (x, y, z) followed by `extra` given by a function of the position
-template <int D, class Extra>
-struct Appended_map
-{
-  using key_type = Mesh::Vertex_index;
-  using value_type = std::array<double, D>;
-  using reference = value_type;
-  using category = boost::readable_property_map_tag;
-  const Mesh* mesh;
-  Extra extra;
-
-  friend value_type get(const Appended_map& map, key_type v)
-  {
-    const Point& p = map.mesh->point(v);
-    value_type x;
-    x[0] = p.x(); x[1] = p.y(); x[2] = p.z();
-    map.extra(p, x);
-    return x;
-  }
-};
-
-template <int D, class Extra>
-Appended_map<D, Extra> appended(const Mesh& m, Extra extra) { return {&m, extra}; }
 
 void test_euler_characteristic()
 {

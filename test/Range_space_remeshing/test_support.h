@@ -242,6 +242,33 @@ inline Distance distance_to(const Mesh& reference, const Mesh& mesh, std::size_t
   return d;
 }
 
+// ------------------------------------------------------------------ maps
+
+/// f(p) = (x, y, z) followed by what `extra(p, x)` writes into x (it may also
+/// overwrite the first three coordinates).
+template <int D, class Extra>
+struct Appended_map
+{
+  using key_type = Mesh::Vertex_index;
+  using value_type = std::array<double, D>;
+  using reference = value_type;
+  using category = boost::readable_property_map_tag;
+  const Mesh* mesh;
+  Extra extra;
+
+  friend value_type get(const Appended_map& map, key_type v)
+  {
+    const Point& p = map.mesh->point(v);
+    value_type x;
+    x[0] = p.x(); x[1] = p.y(); x[2] = p.z();
+    map.extra(p, x);
+    return x;
+  }
+};
+
+template <int D, class Extra>
+Appended_map<D, Extra> appended(const Mesh& m, Extra extra) { return {&m, extra}; }
+
 // ------------------------------------------------------------------ invariants
 
 /// Checks, on the intermediate structures, that every primal face lies in one

@@ -23,29 +23,6 @@ namespace {
 std::size_t cases_run = 0;
 std::size_t output_faces = 0; // over all complete-scan primal runs: the cases are not trivial
 
-/// (x, y, z) followed by the coordinates `extra` computes from them.
-template <int D, class Extra>
-struct Extended_map
-{
-  using key_type = Mesh::Vertex_index;
-  using value_type = std::array<double, D>;
-  using reference = value_type;
-  using category = boost::readable_property_map_tag;
-  const Mesh* mesh;
-  Extra extra;
-  friend value_type get(const Extended_map& f, key_type v)
-  {
-    const Point& p = f.mesh->point(v);
-    value_type x;
-    f.extra(p, x);
-    return x;
-  }
-};
-template <int D, class Extra>
-Extended_map<D, Extra> extended(const Mesh& mesh, Extra extra)
-{
-  return {&mesh, extra};
-}
 
 /// The invariants, in both seeding modes, twice each (same bytes), and the dual
 /// pipeline; `what` names the case in failure messages.
@@ -100,13 +77,13 @@ void test_snapped_meshes()
     // duplicated and constant coordinates: (x, y, z, x, c), c on and off a grid plane
     const double c = (round % 2) ? 3 * h : 0.37 * h;
     check_all(what + " (x,y,z,x,c)", m,
-              RSR::parameters::range_map(extended<5>(m, [c](const Point& p, std::array<double, 5>& x) {
+              RSR::parameters::range_map(appended<5>(m, [c](const Point& p, std::array<double, 5>& x) {
                                            x = {{p.x(), p.y(), p.z(), p.x(), c}};
                                          }),
                                          params::grid_spacing(h)));
     // a map whose image is a line: every triangle degenerate in the range space
     check_all(what + " (x,x,x)", m,
-              RSR::parameters::range_map(extended<3>(m, [](const Point& p, std::array<double, 3>& x) {
+              RSR::parameters::range_map(appended<3>(m, [](const Point& p, std::array<double, 3>& x) {
                                            x = {{p.x(), p.x(), p.x()}};
                                          }),
                                          params::grid_spacing(h)));
