@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <istream>
 #include <sstream>
 #include <stdexcept>
@@ -30,10 +31,13 @@ struct Input_error : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
-/// Checks the header of a PLY file before CGAL's reader sees it: CGAL 5.5's reader
-/// reads out of bounds on a `property` line that comes before any `element` line
-/// (found by the fuzzer). Throws Input_error naming the file (`name`).
-inline void check_ply_header(std::istream& in, const std::string& name)
+/// Checks the header of a PLY file of `file_size` bytes before CGAL's reader sees
+/// it (both found by the fuzzer): CGAL 5.5's reader reads out of bounds on a
+/// `property` line that comes before any `element` line, and allocates for the
+/// element counts it is given (a count of -12 became minutes of allocation). A
+/// count must be a whole number no larger than the file, as each element takes at
+/// least one byte. Throws Input_error naming the file (`name`).
+inline void check_ply_header(std::istream& in, const std::string& name, std::uintmax_t file_size)
 {
   std::string line;
   bool has_element = false;
@@ -45,8 +49,15 @@ inline void check_ply_header(std::istream& in, const std::string& name)
       throw Input_error(name + " is not a PLY file (no 'ply' on its first line)");
     if(keyword == "end_header")
       return;
-    if(keyword == "element")
+    if(keyword == "element") {
       has_element = true;
+      std::string element, count;
+      words >> element >> count;
+      if(count.empty() || count.size() > 19 || count.find_first_not_of("0123456789") != std::string::npos ||
+         std::stoull(count) > file_size)
+        throw Input_error(name + " has a PLY element count that cannot be right (line " + std::to_string(number) +
+                          ": '" + count + "')");
+    }
     else if(keyword == "property" && !has_element)
       throw Input_error(name + " has a PLY property before any element (line " + std::to_string(number) + ")");
   }

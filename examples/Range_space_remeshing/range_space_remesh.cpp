@@ -346,9 +346,12 @@ Mesh read_input(const std::string& path, bool& triangulated)
   bool ok = false;
   try {
     if(extension_of(path) == "ply") {
-      std::ifstream header(path, std::ios::binary);
-      if(header)
-        rsr_input::check_ply_header(header, "'" + path + "'");
+      std::ifstream header(path, std::ios::binary | std::ios::ate);
+      if(header) {
+        const std::uintmax_t size = std::uintmax_t(header.tellg());
+        header.seekg(0);
+        rsr_input::check_ply_header(header, "'" + path + "'", size);
+      }
     }
     Silenced_cerr silence;
     ok = CGAL::IO::read_polygon_soup(path, points, polygons);

@@ -113,7 +113,7 @@ bool read_soup(int format, const std::string& text, std::vector<Point>& points,
       ok = CGAL::IO::read_OBJ(in, points, polygons);
     else {
       std::istringstream header(text);
-      rsr_input::check_ply_header(header, "the input");
+      rsr_input::check_ply_header(header, "the input", text.size());
       ok = CGAL::IO::read_PLY(in, points, polygons);
     }
   } catch(const std::exception&) {
