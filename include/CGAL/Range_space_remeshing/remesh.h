@@ -42,6 +42,8 @@ The whole pipeline: `primal_remesh()` of `tm`, `dualize()` of the result into
 resolves nothing (an empty primal, or only pieces without a dual), `quads` is left
 as it was and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
 
+\param tm the input triangle mesh, as for `primal_remesh()`.
+\param quads receives the remesh (appended); a `MutableFaceGraph`.
 \param np the named parameters of `primal_remesh()` (`range_map`, `grid_spacing`,
   `grid_origin`, `seeding_method`, `seed_faces`, `maximum_number`,
   `vertex_point_map`, `geom_traits`), plus `dual_placement` (default
