@@ -80,6 +80,41 @@ void fan_triangulate(Mesh& mesh)
   }
 }
 
+/// Whether every face is a triangle whose halfedges point back to it and chain up
+/// (vertices no face uses, which soups may have, do not matter here).
+template <class Mesh>
+bool is_triangle_structure(const Mesh& mesh)
+{
+  for(auto f : faces(mesh)) {
+    const auto h0 = halfedge(f, mesh), h1 = next(h0, mesh), h2 = next(h1, mesh);
+    if(next(h2, mesh) != h0)
+      return false;
+    for(auto h : {h0, h1, h2})
+      if(face(h, mesh) != f || target(h, mesh) != source(next(h, mesh), mesh) ||
+         opposite(opposite(h, mesh), mesh) != h)
+        return false;
+  }
+  return true;
+}
+
+/// Rebuilds `mesh` from the soup with each polygon split into a fan from its first
+/// corner; throws Input_error if the fans do not form a 2-manifold.
+template <class Point, class Mesh>
+void rebuild_from_fans(const std::vector<Point>& points, const std::vector<std::vector<std::size_t>>& polygons,
+                       const std::string& name, Mesh& mesh)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  std::vector<std::vector<std::size_t>> triangles;
+  for(const auto& polygon : polygons)
+    for(std::size_t i = 1; i + 1 < polygon.size(); ++i)
+      triangles.push_back({polygon[0], polygon[i], polygon[i + 1]});
+  if(!PMP::is_polygon_soup_a_polygon_mesh(triangles))
+    throw Input_error(name + " has a polygon that cannot be split into triangles without breaking the mesh");
+  Mesh fans;
+  PMP::polygon_soup_to_polygon_mesh(points, triangles, fans);
+  mesh = std::move(fans);
+}
+
 /// Builds `mesh` from the soup (`name` names it in messages): finite coordinates,
 /// faces of 3 or more existing vertices, an oriented 2-manifold (with or without
 /// border); polygons are triangulated. Returns whether any face was triangulated.
@@ -116,6 +151,10 @@ bool polygon_soup_to_triangle_mesh(const std::vector<Point>& points,
     }
     if(!all_triangulated)
       fan_triangulate(mesh);
+    // on degenerate polygons the triangulation can leave a broken structure (found by
+    // the fuzzer: a pentagon folded onto a plane): fans built in the soup instead
+    if(!is_triangle_structure(mesh))
+      rebuild_from_fans(points, polygons, name, mesh);
   }
   return triangulated;
 }

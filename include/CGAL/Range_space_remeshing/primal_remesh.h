@@ -64,7 +64,12 @@ one_face_per_component(const TriangleMesh& tm, FaceIndexMap face_index)
     while(!stack.empty()) {
       const face_descriptor g = stack.back();
       stack.pop_back();
-      for(auto h : CGAL::halfedges_around_face(halfedge(g, tm), tm)) {
+      // three steps, not a circulation: on a broken structure a circulation may not end
+      const auto h0 = halfedge(g, tm), h1 = next(h0, tm), h2 = next(h1, tm);
+      if(next(h2, tm) != h0)
+        throw Remeshing_error("the input has a face that is not a triangle, or a broken halfedge structure (face " +
+                              std::to_string(get(face_index, g)) + ")");
+      for(auto h : {h0, h1, h2}) {
         const auto o = opposite(h, tm);
         if(is_border(o, tm))
           continue;
