@@ -412,7 +412,7 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     if constexpr(has_normals)
       return internal::to_vec3(get(normal_map, v));
     else
-      return internal::robust_vertex_normal(v, primal, vpm);
+      return internal::area_weighted_vertex_normal(v, primal, vpm);
   };
 
   using Out_VPM = typename GetVertexPointMap<QuadMesh, NamedParametersOut>::type;

@@ -11,10 +11,7 @@
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
-#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
-#include <CGAL/assertions_behaviour.h>
-#include <CGAL/exceptions.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <boost/property_map/property_map.hpp>
 
@@ -47,33 +44,25 @@ std::size_t index_bound(const Range& range, IndexMap index)
   return bound;
 }
 
-/// The unit normal of vertex v: CGAL's `compute_vertex_normal()` where it works; on
-/// faces so degenerate that its construction fails (an assertion on a circumcentre of
-/// underflowing coordinates, found by the fuzzer) or gives a non-finite vector, the
-/// sum of the incident faces' area vectors, normalised (zero if they all vanish).
+/// The unit normal of vertex v: the sum of its faces' area vectors (Newell's, so that
+/// polygons are welcome), normalised; zero if they all vanish. Not CGAL's
+/// `compute_vertex_normal()`: its visibility-maximising normal cost more than half of
+/// the contouring time when the output asks for normals, and its circumcentre
+/// construction asserts on underflowing coordinates (found by the fuzzer).
 template <class PolygonMesh, class VertexPointMap>
-Vec3 robust_vertex_normal(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
-                          const PolygonMesh& mesh, VertexPointMap vpm)
+Vec3 area_weighted_vertex_normal(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                                 const PolygonMesh& mesh, VertexPointMap vpm)
 {
-  try {
-    const auto n = CGAL::Polygon_mesh_processing::compute_vertex_normal(
-        v, mesh, CGAL::parameters::vertex_point_map(vpm));
-    const Vec3 result = {{CGAL::to_double(n.x()), CGAL::to_double(n.y()), CGAL::to_double(n.z())}};
-    if(std::isfinite(result[0]) && std::isfinite(result[1]) && std::isfinite(result[2]))
-      return result;
-  } catch(const CGAL::Failure_exception&) {
-  }
-  std::vector<Vec3> corners;
   Vec3 sum = {{0, 0, 0}};
   for(auto h : CGAL::halfedges_around_target(halfedge(v, mesh), mesh)) {
     if(is_border(h, mesh))
       continue;
-    corners.clear();
-    for(auto w : CGAL::vertices_around_face(h, mesh))
-      corners.push_back(to_vec3(get(vpm, w)));
-    const Vec3 area = newell_normal(corners);
-    for(int d = 0; d < 3; ++d)
-      sum[d] += area[d];
+    for(auto e : CGAL::halfedges_around_face(h, mesh)) { // Newell's sum over the face's edges
+      const Vec3 p = to_vec3(get(vpm, source(e, mesh))), q = to_vec3(get(vpm, target(e, mesh)));
+      sum[0] += (p[1] - q[1]) * (p[2] + q[2]);
+      sum[1] += (p[2] - q[2]) * (p[0] + q[0]);
+      sum[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
   }
   const Vec3 unit = normalized(sum);
   return std::isfinite(unit[0]) && std::isfinite(unit[1]) && std::isfinite(unit[2]) ? unit : Vec3{{0, 0, 0}};

@@ -18,7 +18,6 @@
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Polygon_mesh_processing/compute_normal.h>
 #include <CGAL/Surface_mesh/Surface_mesh_fwd.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -51,7 +50,7 @@ public:
       known_.assign(num_vertices(tm_), 0);
     }
     if(!known_[id]) {
-      normals_[id] = robust_vertex_normal(v, tm_, vpm_);
+      normals_[id] = area_weighted_vertex_normal(v, tm_, vpm_);
       known_[id] = 1;
     }
     return normals_[id];
