@@ -134,6 +134,18 @@ void test_kernels_and_graphs()
   CHECK_EQ(stats.output_faces, num_faces(poly_out));
 }
 
+template <class F>
+bool throws_remeshing_error(F f)
+{
+  try {
+    f();
+  } catch(const RSR::Remeshing_error& e) {
+    std::cout << "  expected error: " << e.what() << std::endl;
+    return true;
+  }
+  return false;
+}
+
 void test_determinism_and_seeding()
 {
   const Mesh genus_2 = make_genus_2(3);
@@ -157,6 +169,33 @@ void test_determinism_and_seeding()
   CHECK(fine_stats.mapped_vertices * 3 < num_vertices(fine));
   CHECK_EQ(euler_characteristic(out), 2L);
 
+  // Given seed faces, the traversal reads only what it reaches: a quad in another
+  // component is never seen (the default search for one seed per component walks the
+  // whole mesh, and refuses it).
+  {
+    Mesh sphere_and_quad = make_sphere(1.0, 3);
+    const auto first_face = *faces(sphere_and_quad).begin();
+    std::array<Mesh::Vertex_index, 4> q;
+    for(int c = 0; c < 4; ++c)
+      q[c] = sphere_and_quad.add_vertex(Point(5 + (c == 1 || c == 2), 5 + (c >= 2), 5));
+    sphere_and_quad.add_face(q[0], q[1], q[2], q[3]);
+    Mesh from_seed, whole_sphere;
+    const std::vector<Mesh::Face_index> seeds(1, first_face);
+    const auto seeded_stats = RSR::primal_remesh(
+        sphere_and_quad, from_seed,
+        RSR::parameters::seed_faces(seeds, params::grid_spacing(0.25).seeding_method(RSR::Seeding_method::SEEDED)));
+    remesh_and_check(make_sphere(1.0, 3), whole_sphere, params::grid_spacing(0.25));
+    CHECK_EQ(num_vertices(from_seed), num_vertices(whole_sphere)); // (created in another order)
+    CHECK_EQ(num_faces(from_seed), num_faces(whole_sphere));
+    CHECK_EQ(euler_characteristic(from_seed), 2L);
+    CHECK(seeded_stats.visited_faces < num_faces(sphere_and_quad));
+    Mesh refused;
+    CHECK(throws_remeshing_error([&] {
+      RSR::primal_remesh(sphere_and_quad, refused,
+                         params::grid_spacing(0.25).seeding_method(RSR::Seeding_method::SEEDED));
+    }));
+  }
+
   // a Surface_mesh with removed elements (indices beyond the live count) works
   {
     Mesh with_garbage; // a removed triangle first: every live index is shifted
@@ -178,18 +217,6 @@ void test_determinism_and_seeding()
                                               params::grid_spacing(0.25)));
   CHECK_EQ(euler_characteristic(shifted), 2L);
   CHECK(fingerprint(shifted) != fingerprint(out));
-}
-
-template <class F>
-bool throws_remeshing_error(F f)
-{
-  try {
-    f();
-  } catch(const RSR::Remeshing_error& e) {
-    std::cout << "  expected error: " << e.what() << std::endl;
-    return true;
-  }
-  return false;
 }
 
 void test_errors()

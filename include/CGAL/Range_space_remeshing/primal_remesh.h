@@ -166,10 +166,15 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
     if(tracer.has_seen_border())
       stats.uncrossed_border_cycles = tracer.number_of_uncrossed_border_cycles();
   } else {
-    auto seed_range = choose_parameter(get_parameter(np_in, internal_np::seed_faces),
-                                       one_face_per_component(tm, face_index));
-    for(auto f : seed_range)
-      stats.seeds += tracer.seed_from(f) ? 1 : 0;
+    // not choose_parameter(): its default argument, a pass over the whole mesh, would be
+    // evaluated even when the user gives the seeds
+    if constexpr(is_default_parameter<NamedParametersIn, internal_np::seed_faces_t>::value) {
+      for(auto f : one_face_per_component(tm, face_index))
+        stats.seeds += tracer.seed_from(f) ? 1 : 0;
+    } else {
+      for(auto f : get_parameter(np_in, internal_np::seed_faces))
+        stats.seeds += tracer.seed_from(f) ? 1 : 0;
+    }
     stats.uncrossed_border_cycles = tracer.number_of_border_cycles_of_empty_components();
   }
   stats.time_seeding_ms = milliseconds_since(start);
