@@ -14,8 +14,10 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdlib>
 #include <cstdint>
 #include <istream>
 #include <sstream>
@@ -62,6 +64,71 @@ inline void check_ply_header(std::istream& in, const std::string& name, std::uin
       throw Input_error(name + " has a PLY property before any element (line " + std::to_string(number) + ")");
   }
   throw Input_error(name + " has a PLY header without end_header");
+}
+
+/// The numbers on a line of an OFF file, its comment removed.
+inline std::vector<std::string> off_tokens(std::string line)
+{
+  line = line.substr(0, line.find('#'));
+  std::istringstream words(line);
+  std::vector<std::string> tokens;
+  for(std::string word; words >> word;)
+    tokens.push_back(word);
+  return tokens;
+}
+
+/// Whether `token` is a number that no count could be: negative, not a number, or
+/// above `bound` (CGAL's OFF reader reads counts as floating-point numbers, "1e3",
+/// and converts them unchecked). Other words are left to CGAL's reader to refuse.
+inline bool is_absurd_count(const std::string& token, double bound)
+{
+  char* end = nullptr;
+  const double value = std::strtod(token.c_str(), &end);
+  const bool is_number = end != token.c_str() && *end == '\0';
+  return is_number && !(value >= 0 && value <= bound);
+}
+
+/// Checks the counts of a text OFF file of `file_size` bytes before CGAL's reader sees
+/// it (found by the fuzzer): CGAL 5.5's reader allocates what the header and each
+/// face's degree say, so a face line "1e9 3" made it fill 8 GB before failing. The
+/// header's counts must be no larger than the file; a face line's degree above a
+/// million must be matched by as many indices on its line. Binary OFF is left
+/// to CGAL. Throws Input_error naming the file (`name`).
+inline void check_off_counts(std::istream& in, const std::string& name, std::uintmax_t file_size)
+{
+  std::string line;
+  std::vector<std::string> tokens;
+  std::size_t number = 0;
+  auto next_tokens = [&] { // the next line with something on it
+    while(std::getline(in, line)) {
+      ++number;
+      tokens = off_tokens(line);
+      if(!tokens.empty())
+        return true;
+    }
+    return false;
+  };
+  if(!next_tokens() || tokens[0].find("OFF") == std::string::npos)
+    return; // not an OFF header: CGAL's reader refuses it
+  if(tokens.size() > 1 && tokens[1] == "BINARY")
+    return;
+  const bool has_dimension = tokens[0].find('n') != std::string::npos; // nOFF: a dimension comes first
+  std::vector<std::string> header(tokens.begin() + 1, tokens.end());
+  while(header.size() < (has_dimension ? 4u : 3u) && next_tokens())
+    header.insert(header.end(), tokens.begin(), tokens.end());
+  const std::size_t first_count = has_dimension ? 1 : 0;
+  if(header.size() < first_count + 3)
+    return; // a truncated header: CGAL's reader refuses it
+  for(std::size_t c = first_count; c < first_count + 3; ++c)
+    if(is_absurd_count(header[c], double(file_size)))
+      throw Input_error(name + " has an OFF count that cannot be right ('" + header[c] + "' in its header)");
+  const double vertices = std::strtod(header[first_count].c_str(), nullptr);
+  for(double v = 0; v < vertices && next_tokens(); ++v) {
+  }
+  while(next_tokens()) // the faces: the degree, then as many indices
+    if(is_absurd_count(tokens[0], std::max(1e6, double(tokens.size() - 1))))
+      throw Input_error(name + " has an OFF face whose degree cannot be right (line " + std::to_string(number) +
+                        ": '" + tokens[0] + "')");
 }
 
 /// Splits every face that is not a triangle into a fan: always possible, whatever

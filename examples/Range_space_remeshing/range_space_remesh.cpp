@@ -345,12 +345,15 @@ Mesh read_input(const std::string& path, bool& triangulated)
   std::vector<std::vector<std::size_t>> polygons;
   bool ok = false;
   try {
-    if(extension_of(path) == "ply") {
+    if(extension_of(path) == "ply" || extension_of(path) == "off") {
       std::ifstream header(path, std::ios::binary | std::ios::ate);
       if(header) {
         const std::uintmax_t size = std::uintmax_t(header.tellg());
         header.seekg(0);
-        rsr_input::check_ply_header(header, "'" + path + "'", size);
+        if(extension_of(path) == "ply")
+          rsr_input::check_ply_header(header, "'" + path + "'", size);
+        else
+          rsr_input::check_off_counts(header, "'" + path + "'", size);
       }
     }
     Silenced_cerr silence;

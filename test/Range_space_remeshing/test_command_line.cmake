@@ -312,6 +312,26 @@ endif()
 # a negative count made CGAL's PLY reader allocate for minutes (found by the fuzzer)
 file(WRITE ${WORK_DIR}/negative_count.ply "ply\nformat ascii 1.0\nelement vertex -12\nproperty float x\nend_header\n0\n")
 run(2 x.off negative_count.ply x.off)
+# a face degree of 1e9 made CGAL's OFF reader fill 8 GB for 20 s (found by the fuzzer);
+# comments, a colour header and an ordinary face before it must not confuse the guard
+file(WRITE ${WORK_DIR}/huge_degree.off
+     "OFF # comment\n# comment line\n\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n1e09 3\n")
+run(2 x.off huge_degree.off x.off)
+if(NOT err MATCHES "OFF face whose degree cannot be right \\(line 12: '1e09'\\)")
+  message(SEND_ERROR "huge_degree.off: unexpected message: ${err}")
+  math(EXPR failures "${failures} + 1")
+endif()
+file(WRITE ${WORK_DIR}/huge_count.off "OFF\n4 4e12 0\n0 0 0\n")
+run(2 x.off huge_count.off x.off)
+if(NOT err MATCHES "OFF count that cannot be right")
+  message(SEND_ERROR "huge_count.off: unexpected message: ${err}")
+  math(EXPR failures "${failures} + 1")
+endif()
+# the same guard leaves valid files alone: a commented OFF with colours reads
+file(WRITE ${WORK_DIR}/commented.off
+     "COFF\n# a tetrahedron\n4 4 6\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n0 0 1 9 9 9 255\n"
+     "3 0 2 1\n3 0 1 3 # a face\n3 1 2 3\n3 0 3 2\n")
+run(0 commented_out.off commented.off commented_out.off --cell-size 0.2 --absolute --output primal)
 file(WRITE ${WORK_DIR}/truncated.off "OFF\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n")
 run(2 x.off truncated.off x.off)
 file(WRITE ${WORK_DIR}/empty.off "OFF\n0 0 0\n")
