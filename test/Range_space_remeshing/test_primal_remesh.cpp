@@ -6,6 +6,7 @@
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/properties_Polyhedron_3.h>
@@ -278,6 +279,56 @@ void test_needle()
   CHECK(stats.output_vertices > 0);
 }
 
+#if defined(CGAL_LINKED_WITH_TBB)
+/// The parallel complete scan gives the sequential result, vertex numbering included.
+template <class NP>
+void check_parallel_is_sequential(const char* name, const Mesh& input, const NP& np)
+{
+  Mesh sequential, parallel;
+  const RSR::Statistics s = RSR::primal_remesh<CGAL::Sequential_tag>(input, sequential, np);
+  const RSR::Statistics p = RSR::primal_remesh<CGAL::Parallel_tag>(input, parallel, np);
+  std::cout << "parallel scan, " << name << ": " << p.output_vertices << " vertices, "
+            << (fingerprint(parallel) == fingerprint(sequential) ? "identical" : "DIFFERENT") << std::endl;
+  CHECK(num_faces(parallel) > 0);
+  CHECK(fingerprint(parallel) == fingerprint(sequential));
+  bool same_points = num_vertices(parallel) == num_vertices(sequential);
+  for(auto v : vertices(parallel))
+    same_points = same_points && parallel.point(v) == sequential.point(v);
+  CHECK(same_points);
+  CHECK_EQ(p.mapped_vertices, s.mapped_vertices);
+  CHECK_EQ(p.visited_faces, s.visited_faces);
+  CHECK_EQ(p.uncrossed_border_cycles, s.uncrossed_border_cycles);
+}
+
+void test_parallel_scan()
+{
+  check_parallel_is_sequential("sphere", make_sphere(1.0, 6), params::grid_spacing(0.05));
+  check_parallel_is_sequential("genus 2", make_genus_2(4), params::grid_spacing(0.07));
+  check_parallel_is_sequential("lattice cube", make_lattice_cube(6), params::grid_spacing(1.0 / 3));
+  Mesh open_sphere = make_sphere(1.0, 5); // a border: the boundary vertices come in order too
+  std::vector<Mesh::Face_index> cap;
+  for(auto f : faces(open_sphere))
+    if(open_sphere.point(target(halfedge(f, open_sphere), open_sphere)).z() > 0.7)
+      cap.push_back(f);
+  for(auto f : cap)
+    CGAL::Euler::remove_face(halfedge(f, open_sphere), open_sphere);
+  open_sphere.collect_garbage();
+  check_parallel_is_sequential("open sphere", open_sphere, params::grid_spacing(0.06));
+  const Mesh torus = make_torus(1.0, 0.4, 120, 60);
+  auto lifted = appended<5>(torus, [](const Point& p, std::array<double, 5>& x) {
+    x[3] = std::sin(3 * p.x());
+    x[4] = 0.5 * p.y() * p.z();
+  });
+  check_parallel_is_sequential("torus in R^5", torus, range_map(lifted).grid_spacing(0.08));
+  // errors found on another thread reach the caller as on this one
+  auto nan_map = appended<4>(torus, [](const Point& p, std::array<double, 4>& x) {
+    x[3] = p.x() > 0.5 ? std::numeric_limits<double>::quiet_NaN() : 0.0;
+  });
+  Mesh out;
+  CHECK(throws_remeshing_error([&] { RSR::primal_remesh<CGAL::Parallel_tag>(torus, out, range_map(nan_map)); }));
+}
+#endif
+
 int main()
 {
   test_sampled_geometry();
@@ -289,5 +340,10 @@ int main()
   test_kernels_and_graphs();
   test_determinism_and_seeding();
   test_errors();
+#if defined(CGAL_LINKED_WITH_TBB)
+  test_parallel_scan();
+#else
+  std::cout << "TBB not linked: the parallel scan is not tested" << std::endl;
+#endif
   return report("test_primal_remesh");
 }

@@ -18,6 +18,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
 
 #include <array>
 #include <chrono>
@@ -97,11 +98,19 @@ struct No_inspection
 // The whole run; `inspect(tracer, complex)` sees the intermediate structures
 // before the output is written (tests check the invariants there).
 template <class TriangleMesh, class PolygonMesh, class NamedParametersIn,
-          class NamedParametersOut, class Inspector>
+          class NamedParametersOut, class Inspector, class ConcurrencyTag = CGAL::Sequential_tag>
 Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
                               const NamedParametersIn& np_in,
-                              const NamedParametersOut& np_out, const Inspector& inspect)
+                              const NamedParametersOut& np_out, const Inspector& inspect,
+                              ConcurrencyTag = ConcurrencyTag())
 {
+#if !defined(CGAL_LINKED_WITH_TBB)
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable.");
+  constexpr bool parallel = false;
+#else
+  constexpr bool parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+#endif
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
@@ -153,6 +162,10 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
   stats.input_faces = num_faces(tm);
   const bool seeded = (seeding == Seeding_method::SEEDED);
   if(!seeded) {
+#if defined(CGAL_LINKED_WITH_TBB)
+    if constexpr(parallel)
+      tracer.map_and_record_in_parallel();
+#endif
     // Refuse before building anything when the output would exceed the cap (the
     // estimate maps every vertex, which the scan needs anyway).
     double expected = 0;
@@ -160,8 +173,13 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
       throw Remeshing_error("the output would have about " + std::to_string(std::llround(expected)) +
                             " vertices, more than the cap of " + std::to_string(maximum_vertices) +
                             ": the cell size is too small for this input");
-    for(auto f : faces(tm))
-      tracer.scan_face(f); // also checks that every face is a triangle
+#if defined(CGAL_LINKED_WITH_TBB)
+    if constexpr(parallel)
+      tracer.scan_in_parallel();
+    else
+#endif
+      for(auto f : faces(tm))
+        tracer.scan_face(f); // also checks that every face is a triangle
     stats.seeds = tracer.intersection_vertices().size();
     if(tracer.has_seen_border())
       stats.uncrossed_border_cycles = tracer.number_of_uncrossed_border_cycles();
@@ -288,15 +306,22 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
 \returns what the run did, including per-stage times.
 \throws Remeshing_error on an empty mesh, a non-triangle face, a non-finite map value or cell size, a cell size so small that
   range coordinates exceed 2^29 cells, or when the output cap would be exceeded.
+
+\tparam ConcurrencyTag `CGAL::Sequential_tag` (the default) or `CGAL::Parallel_tag`
+  (needs TBB: link `CGAL::TBB_support`). In parallel, the complete scan maps the
+  vertices, records the faces and runs the exact tests on all threads; the result is
+  the sequential one, vertex numbering included. The range map's `get()` must then be
+  safe to call from several threads at once (all the package's maps are). The seeded
+  traversal and the tracing stay sequential.
 */
-template <class TriangleMesh, class PolygonMesh,
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class PolygonMesh,
           class NamedParametersIn = CGAL::parameters::Default_named_parameters,
           class NamedParametersOut = CGAL::parameters::Default_named_parameters>
 Statistics primal_remesh(const TriangleMesh& tm, PolygonMesh& out,
                          const NamedParametersIn& np_in = CGAL::parameters::default_values(),
                          const NamedParametersOut& np_out = CGAL::parameters::default_values())
 {
-  return internal::primal_remesh_impl(tm, out, np_in, np_out, internal::No_inspection());
+  return internal::primal_remesh_impl(tm, out, np_in, np_out, internal::No_inspection(), ConcurrencyTag());
 }
 
 } // namespace Range_space_remeshing

@@ -49,11 +49,13 @@ as it was and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles
   `vertex_point_map`, `geom_traits`), plus `dual_placement` (default
   `Dual_placement::QEM`), `quad_collapse` (default `true`) and
   `number_of_relaxation_steps` (default 3).
+\tparam ConcurrencyTag `CGAL::Sequential_tag` (the default) or `CGAL::Parallel_tag`, for
+  the primal remesh (see `primal_remesh()`).
 \param np_out `vertex_point_map` of `quads`; `vertex_color_map` (receives colours, if `np`
   has the input's `vertex_color_map`: sampled on the primal, averaged per quad; a
   collapsed pair keeps one of its two colours, the relaxation does not resample).
 */
-template <class TriangleMesh, class QuadMesh,
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class QuadMesh,
           class NamedParameters = CGAL::parameters::Default_named_parameters,
           class NamedParametersOut = CGAL::parameters::Default_named_parameters>
 Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
@@ -96,13 +98,13 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
   // result, which the statistics explain, rather than an error of a later stage.
   if constexpr(wants_colors) { // the primal carries colours only when they are wanted
     auto primal_colors = primal.add_property_map<typename Primal::Vertex_index, std::array<double, 3>>("v:color").first;
-    stats.primal = primal_remesh(tm, primal, np, primal_out.vertex_color_map(primal_colors));
+    stats.primal = primal_remesh<ConcurrencyTag>(tm, primal, np, primal_out.vertex_color_map(primal_colors));
     if(num_faces(primal) == 0)
       return finish();
     stats.dual = dualize(primal, quads, dual_in.vertex_color_map(primal_colors),
                          dual_out.vertex_color_map(get_parameter(np_out, CGAL::internal_np::vertex_color_map)));
   } else {
-    stats.primal = primal_remesh(tm, primal, np, primal_out);
+    stats.primal = primal_remesh<ConcurrencyTag>(tm, primal, np, primal_out);
     if(num_faces(primal) == 0)
       return finish();
     stats.dual = dualize(primal, quads, dual_in, dual_out);

@@ -28,9 +28,15 @@
 #include <CGAL/Range_space_remeshing/internal/Vertex_table.h>
 
 #include <CGAL/Exact_rational.h>
+#if defined(CGAL_LINKED_WITH_TBB)
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <atomic>
+#endif
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -140,11 +146,95 @@ public:
     // Most triangles lie in one lattice cell (equal ceilings at the three corners):
     // no lattice level is crossed, so there is no intersection vertex to look for.
     if(!(*t.c[0] == *t.c[1] && *t.c[1] == *t.c[2]))
-      scan_crossed_levels(t);
+      scan_crossed_levels(t, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
+        find_or_create(face_id, i, j, k, m, o, /*queue*/ true);
+      });
     for(int e = 0; e < 3; ++e)
       if(records_[face_id].neighbour[e] == border)
         border_crossings(face_id, e);
   }
+
+#if defined(CGAL_LINKED_WITH_TBB)
+  /// The first half of the complete scan on all threads: maps every vertex and
+  /// records every face, each task writing only the entries of its own elements.
+  /// Afterwards `expected_number_of_vertices_exceeds()` maps nothing.
+  void map_and_record_in_parallel()
+  {
+    const std::vector<vertex_descriptor> all_vertices(vertices(tm_).begin(), vertices(tm_).end());
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, all_vertices.size(), 2048),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        for(std::size_t i = range.begin(); i != range.end(); ++i) {
+                          const std::uint32_t id = std::uint32_t(get(vertex_index_, all_vertices[i]));
+                          vertex_of_id_[id] = all_vertices[i];
+                          compute_range_coordinates(id);
+                          mapped_[id] = 1;
+                        }
+                      });
+    number_of_mapped_ = all_vertices.size();
+
+    all_faces_.assign(faces(tm_).begin(), faces(tm_).end());
+    all_face_ids_.resize(all_faces_.size());
+    for(std::size_t i = 0; i < all_faces_.size(); ++i) {
+      all_face_ids_[i] = std::uint32_t(get(face_index_, all_faces_[i]));
+      face_of_id_[all_face_ids_[i]] = all_faces_[i];
+    }
+    std::atomic<bool> border_seen(false);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, all_faces_.size(), 2048),
+                      [&](const tbb::blocked_range<std::size_t>& range) {
+                        bool border_here = false;
+                        for(std::size_t i = range.begin(); i != range.end(); ++i) {
+                          const std::uint32_t id = all_face_ids_[i];
+                          fill_record(id);
+                          recorded_[id] = 1;
+                          for(std::uint32_t n : records_[id].neighbour)
+                            border_here = border_here || n == border;
+                        }
+                        if(border_here)
+                          border_seen = true;
+                      });
+    seen_border_ = seen_border_ || border_seen;
+    number_of_visited_faces_ = all_faces_.size();
+  }
+
+  /// The second half: the exact tests of every face on all threads, then, on this
+  /// thread, the vertices created and queued in the order in which `scan_face()`
+  /// over `faces(tm)` creates them, so that the result is the sequential one,
+  /// vertex numbering included.
+  void scan_in_parallel()
+  {
+    struct Found
+    {
+      std::uint32_t position; // in faces(tm)
+      std::int8_t i, j, orientation;
+      std::int32_t k, m;
+    };
+    constexpr std::size_t chunk = 1024; // faces per task: the merge below needs the order
+    const std::size_t n = all_faces_.size(), chunks = (n + chunk - 1) / chunk;
+    std::vector<std::vector<Found>> found(chunks);
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks), [&](const tbb::blocked_range<std::size_t>& range) {
+      for(std::size_t c = range.begin(); c != range.end(); ++c)
+        for(std::size_t position = c * chunk; position < (std::min)(n, (c + 1) * chunk); ++position) {
+          const Triangle t = load(all_face_ids_[position]); // reads only: all mapped and recorded
+          if(!(*t.c[0] == *t.c[1] && *t.c[1] == *t.c[2]))
+            scan_crossed_levels(t, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
+              found[c].push_back(
+                  {std::uint32_t(position), std::int8_t(i), std::int8_t(j), std::int8_t(o), k, m});
+            });
+        }
+    });
+    for(std::size_t c = 0; c < chunks; ++c) {
+      auto next = found[c].begin();
+      for(std::size_t position = c * chunk; position < (std::min)(n, (c + 1) * chunk); ++position) {
+        const std::uint32_t face_id = all_face_ids_[position];
+        for(; next != found[c].end() && next->position == position; ++next)
+          find_or_create(face_id, next->i, next->j, next->k, next->m, next->orientation, /*queue*/ true);
+        for(int e = 0; e < 3; ++e)
+          if(records_[face_id].neighbour[e] == border)
+            border_crossings(face_id, e);
+      }
+    }
+  }
+#endif
 
   /// Expected number of intersection vertices: the number of lattice points in a
   /// projected triangle is about its area, so the sum of the projected areas over all
@@ -340,6 +430,14 @@ private:
 #endif
   void map_vertex(std::uint32_t id)
   {
+    compute_range_coordinates(id);
+    mapped_[id] = 1;
+    ++number_of_mapped_;
+  }
+
+  /// f of the vertex, in cell units, and its ceilings: writes only its own entry.
+  void compute_range_coordinates(std::uint32_t id)
+  {
     const Point_d f = get(range_map_, vertex_of_id_[id]);
     Point_d& x = mapped_vertices_[id].u;
     Levels& c = mapped_vertices_[id].ceiling;
@@ -353,8 +451,6 @@ private:
                               "more than 2^29 cells along one axis");
       c[q] = ceil_to_int(x[q]);
     }
-    mapped_[id] = 1;
-    ++number_of_mapped_;
   }
 
   const Face_record& record(std::uint32_t face_id)
@@ -363,6 +459,31 @@ private:
     Face_record& r = records_[face_id];
     if(recorded_[face_id])
       return r;
+    const Face_handles handles = fill_record(face_id);
+    for(int e = 0; e < 3; ++e) {
+      vertex_of_id_[r.vertex[e]] = handles.corners[e];
+      if(r.neighbour[e] == border)
+        seen_border_ = true;
+      else
+        face_of_id_[r.neighbour[e]] = handles.neighbours[e];
+    }
+    recorded_[face_id] = 1;
+    ++number_of_visited_faces_;
+    return r;
+  }
+
+  /// The corners and the neighbours (where not border) of a face.
+  struct Face_handles
+  {
+    std::array<vertex_descriptor, 3> corners;
+    std::array<face_descriptor, 3> neighbours;
+  };
+
+  /// Fills the record of a face: the only entry it writes.
+  Face_handles fill_record(std::uint32_t face_id)
+  {
+    Face_record& r = records_[face_id];
+    Face_handles handles;
     const face_descriptor f = face_of_id_[face_id];
     const halfedge_descriptor h0 = halfedge(f, tm_);
     const std::array<halfedge_descriptor, 3> h = {{h0, next(h0, tm_), next(next(h0, tm_), tm_)}};
@@ -371,22 +492,17 @@ private:
                             std::to_string(face_id) + ")");
     check_face_structure(f, face_id, h);
     for(int e = 0; e < 3; ++e) {
-      const vertex_descriptor v = source(h[e], tm_);
-      r.vertex[e] = std::uint32_t(get(vertex_index_, v));
-      vertex_of_id_[r.vertex[e]] = v;
+      handles.corners[e] = source(h[e], tm_);
+      r.vertex[e] = std::uint32_t(get(vertex_index_, handles.corners[e]));
       const halfedge_descriptor o = opposite(h[e], tm_);
       if(is_border(o, tm_)) {
         r.neighbour[e] = border;
-        seen_border_ = true;
       } else {
-        const face_descriptor n = face(o, tm_);
-        r.neighbour[e] = std::uint32_t(get(face_index_, n));
-        face_of_id_[r.neighbour[e]] = n;
+        handles.neighbours[e] = face(o, tm_);
+        r.neighbour[e] = std::uint32_t(get(face_index_, handles.neighbours[e]));
       }
     }
-    recorded_[face_id] = 1;
-    ++number_of_visited_faces_;
-    return r;
+    return handles;
   }
 
   /// What the walk relies on, checked once per visited face (so also lazily in the
@@ -420,7 +536,9 @@ private:
 
   /// The intersection vertices of the triangle: the grid edges {x_i = k, x_j = m}
   /// of the levels it strictly crosses, tested exactly (see `scan_face()`).
-  void scan_crossed_levels(const Triangle& t)
+  /// Calls `found(i, j, k, m, orientation)` for each, in a fixed order.
+  template <class Found>
+  void scan_crossed_levels(const Triangle& t, const Found& found) const
   {
     std::array<std::int32_t, D> first, last; // lattice levels strictly crossed, per axis
     int crossed_axes[D];
@@ -444,7 +562,7 @@ private:
             const int o = predicates_.grid_edge_orientation(*t.p[0], *t.p[1], *t.p[2], i, j,
                                                             double(k), double(m));
             if(o != 0)
-              find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
+              found(i, j, k, m, o);
           }
         }
       }
@@ -1091,6 +1209,8 @@ private:
 
   std::vector<Vertex> vertices_;
   std::vector<face_descriptor> face_of_id_;
+  std::vector<face_descriptor> all_faces_;  // the parallel scan's order: faces(tm)
+  std::vector<std::uint32_t> all_face_ids_; // and their indices
   Vertex_table table_;
   std::deque<std::uint32_t> queue_;
 };
