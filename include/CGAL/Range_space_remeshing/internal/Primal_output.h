@@ -22,6 +22,7 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <CGAL/Range_space_remeshing/Lazy_vertex_normal_map.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 
 #include <cmath>
@@ -31,7 +32,7 @@ namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
 
-/// Unit vertex normals of the input, computed on first use only.
+/// Unit vertex normals of the input (area-weighted), computed on first use only, once each.
 template <class TriangleMesh, class VPM, class VertexIndexMap>
 class Lazy_vertex_normals
 {
@@ -39,7 +40,7 @@ class Lazy_vertex_normals
 
 public:
   Lazy_vertex_normals(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex_index)
-    : tm_(tm), vpm_(vpm), vertex_index_(vertex_index)
+    : tm_(tm), normal_map_(tm, vpm), vertex_index_(vertex_index)
   {}
 
   std::array<double, 3> operator()(vertex_descriptor v)
@@ -50,7 +51,7 @@ public:
       known_.assign(num_vertices(tm_), 0);
     }
     if(!known_[id]) {
-      normals_[id] = area_weighted_vertex_normal(v, tm_, vpm_);
+      normals_[id] = get(normal_map_, v);
       known_[id] = 1;
     }
     return normals_[id];
@@ -58,7 +59,7 @@ public:
 
 private:
   const TriangleMesh& tm_;
-  VPM vpm_;
+  Lazy_vertex_normal_map<TriangleMesh, VPM> normal_map_; // area-weighted: what the normal maps use
   std::vector<std::array<double, 3>> normals_;
   std::vector<std::uint8_t> known_;
   VertexIndexMap vertex_index_;

@@ -36,10 +36,17 @@ Vec3 to_vec3(const Point& p)
 /// (lets maps and normals be given as std::array as well as CGAL points and vectors)
 inline Vec3 to_vec3(const Vec3& v) { return v; }
 
+/// v / |v|, or the zero vector if v is zero or not finite. Scaled by its largest
+/// component first, so that neither tiny nor huge vectors (input coordinates of 1e200)
+/// under- or overflow in the squared length.
 inline Vec3 normalized(const Vec3& v)
 {
-  const double length = std::sqrt(dot(v, v));
-  return length > 0 ? Vec3{{v[0] / length, v[1] / length, v[2] / length}} : Vec3{{0, 0, 0}};
+  const double largest = (std::max)({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
+  if(!(largest > 0) || !std::isfinite(largest))
+    return Vec3{{0, 0, 0}};
+  const Vec3 w = {{v[0] / largest, v[1] / largest, v[2] / largest}};
+  const double length = std::sqrt(dot(w, w));
+  return Vec3{{w[0] / length, w[1] / length, w[2] / length}};
 }
 
 
