@@ -14,6 +14,8 @@
 #include <CGAL/Range_space_remeshing/quad_collapse.h>
 #include <CGAL/Range_space_remeshing/relax_on_tangent_planes.h>
 
+#include "benchmark_support.h"
+
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -39,6 +41,7 @@
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
 namespace RSR = CGAL::Range_space_remeshing;
+using namespace benchmark_support;
 
 namespace {
 
@@ -82,10 +85,7 @@ Measure measure(const Mesh& input, double h, RSR::Seeding_method seeding, int ru
 /// Cell size giving about `target` output vertices (within 3 %).
 double cell_size_for(const Mesh& input, std::size_t target)
 {
-  const auto box = CGAL::Polygon_mesh_processing::bbox(input);
-  double h = 0.01 * std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
-                              CGAL::square(box.ymax() - box.ymin()) +
-                              CGAL::square(box.zmax() - box.zmin()));
+  double h = 0.01 * bbox_diagonal(input);
   for(int iteration = 0; iteration < 20; ++iteration) {
     double wall;
     const auto stats = run_once(input, h, RSR::Seeding_method::COMPLETE_SCAN, wall);
@@ -97,34 +97,13 @@ double cell_size_for(const Mesh& input, std::size_t target)
   return h;
 }
 
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
 /// RMS and maximum of the distances from points sampled on `from` to `to`.
 std::pair<double, double> sampled_distance(const Mesh& from, const Mesh& to, std::size_t samples)
 {
   Mesh a = from, b = to;
   CGAL::Polygon_mesh_processing::triangulate_faces(a);
   CGAL::Polygon_mesh_processing::triangulate_faces(b);
-  std::vector<K::Point_3> points;
-  CGAL::Polygon_mesh_processing::sample_triangle_mesh(
-      a, std::back_inserter(points),
-      CGAL::parameters::number_of_points_per_area_unit(
-          double(samples) / CGAL::Polygon_mesh_processing::area(a))
-          .random_seed(1));
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
-  Tree tree(faces(b).first, faces(b).second, b);
-  tree.accelerate_distance_queries();
-  double sum = 0, worst = 0;
-  for(const auto& p : points) {
-    const double d2 = tree.squared_distance(p);
-    sum += d2;
-    worst = std::max(worst, d2);
-  }
-  return {std::sqrt(sum / double(points.size())), std::sqrt(worst)};
+  return rms_and_max_distance(a, b, samples);
 }
 
 double valence_4_percent(const Mesh& m)
@@ -173,10 +152,7 @@ void measure_dual(const std::string& name, const Mesh& input, double h, int runs
       quads = q; // 3 iterations in all
     }
   }
-  const auto box = CGAL::Polygon_mesh_processing::bbox(input);
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
-                                    CGAL::square(box.ymax() - box.ymin()) +
-                                    CGAL::square(box.zmax() - box.zmin()));
+  const double diagonal = bbox_diagonal(input);
   const auto forward = sampled_distance(quads, input, 200000);
   const auto backward = sampled_distance(input, quads, 200000);
   const double pipeline = median(dual_ms) + median(collapse_ms) + 3 * median(relax_ms);
@@ -196,10 +172,7 @@ void measure_dual(const std::string& name, const Mesh& input, double h, int runs
 /// output vertices; median time per output vertex.
 void measure_dimensions(const std::string& name, Mesh input, std::size_t target, int runs)
 {
-  const auto box = CGAL::Polygon_mesh_processing::bbox(input);
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
-                                    CGAL::square(box.ymax() - box.ymin()) +
-                                    CGAL::square(box.zmax() - box.zmin()));
+  const double diagonal = bbox_diagonal(input);
   auto colors = input.add_property_map<Mesh::Vertex_index, std::array<double, 3>>("v:rgb").first;
   for(auto v : vertices(input)) {
     const auto& p = input.point(v);

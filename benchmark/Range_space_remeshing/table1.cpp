@@ -26,6 +26,8 @@
 #include <CGAL/Range_space_remeshing/primal_remesh.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 
+#include "benchmark_support.h"
+
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -61,6 +63,7 @@ using Mesh = CGAL::Surface_mesh<K::Point_3>;
 namespace RSR = CGAL::Range_space_remeshing;
 namespace PMP = CGAL::Polygon_mesh_processing;
 namespace SMS = CGAL::Surface_mesh_simplification;
+using namespace benchmark_support;
 
 namespace {
 
@@ -69,19 +72,6 @@ using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point start)
 {
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
-double diagonal_of(const Mesh& m)
-{
-  const auto box = PMP::bbox(m);
-  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
-                   CGAL::square(box.zmax() - box.zmin()));
 }
 
 std::string format(const char* pattern, ...) __attribute__((format(printf, 1, 2)));
@@ -104,25 +94,6 @@ struct Quality
   double regular_percent = NAN;      // valence 4 for quads, 6 for triangle meshes
   double min_angle = NAN;            // smallest corner angle of any face, degrees
 };
-
-/// Squared distances from points sampled on `from` (triangulated) to `to`.
-std::pair<double, double> rms_and_max(const Mesh& from, const Mesh& to, std::size_t samples)
-{
-  std::vector<K::Point_3> points;
-  PMP::sample_triangle_mesh(from, std::back_inserter(points),
-                            CGAL::parameters::number_of_points_per_area_unit(double(samples) / PMP::area(from))
-                                .random_seed(1));
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
-  Tree tree(faces(to).first, faces(to).second, to);
-  tree.accelerate_distance_queries();
-  double sum = 0, worst = 0;
-  for(const auto& p : points) {
-    const double d2 = tree.squared_distance(p);
-    sum += d2;
-    worst = std::max(worst, d2);
-  }
-  return {std::sqrt(sum / double(points.size())), std::sqrt(worst)};
-}
 
 double min_corner_angle(const Mesh& m)
 {
@@ -152,8 +123,8 @@ Quality quality(const Mesh& output, const Mesh& input, double diagonal, std::siz
   Mesh triangles = output;
   if(!PMP::triangulate_faces(triangles))
     return q; // a face PMP cannot triangulate: no distances rather than wrong ones
-  const auto forward = rms_and_max(triangles, input, 200000);
-  const auto backward = rms_and_max(input, triangles, 200000);
+  const auto forward = rms_and_max_distance(triangles, input, 200000);
+  const auto backward = rms_and_max_distance(input, triangles, 200000);
   q.rms = std::max(forward.first, backward.first) / diagonal;
   q.hausdorff = std::max(forward.second, backward.second) / diagonal;
   return q;
@@ -603,7 +574,7 @@ bool read_model(const std::string& file, Model& model)
   }
   model.name = file.substr(file.find_last_of('/') + 1);
   model.name = model.name.substr(0, model.name.find_last_of('.'));
-  model.diagonal = diagonal_of(model.mesh);
+  model.diagonal = bbox_diagonal(model.mesh);
   return true;
 }
 

@@ -1,0 +1,61 @@
+// What the benchmark programs share: medians, the bounding-box diagonal and
+// METRO-style sampled distances between two meshes.
+#ifndef RANGE_SPACE_REMESHING_BENCHMARK_SUPPORT_H
+#define RANGE_SPACE_REMESHING_BENCHMARK_SUPPORT_H
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+#include <vector>
+
+namespace benchmark_support {
+
+using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+using Mesh = CGAL::Surface_mesh<K::Point_3>;
+
+inline double median(std::vector<double> v)
+{
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+inline double bbox_diagonal(const Mesh& m)
+{
+  const auto box = CGAL::Polygon_mesh_processing::bbox(m);
+  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                   CGAL::square(box.zmax() - box.zmin()));
+}
+
+/// RMS and maximum of the distances from `samples` points spread uniformly over the
+/// triangle mesh `from` (fixed seed) to the triangle mesh `to`.
+inline std::pair<double, double> rms_and_max_distance(const Mesh& from, const Mesh& to, std::size_t samples)
+{
+  std::vector<K::Point_3> points;
+  CGAL::Polygon_mesh_processing::sample_triangle_mesh(
+      from, std::back_inserter(points),
+      CGAL::parameters::number_of_points_per_area_unit(double(samples) / CGAL::Polygon_mesh_processing::area(from))
+          .random_seed(1));
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+  Tree tree(faces(to).first, faces(to).second, to);
+  tree.accelerate_distance_queries();
+  double sum = 0, worst = 0;
+  for(const auto& p : points) {
+    const double d2 = tree.squared_distance(p);
+    sum += d2;
+    worst = (std::max)(worst, d2);
+  }
+  return {std::sqrt(sum / double(points.size())), std::sqrt(worst)};
+}
+
+} // namespace benchmark_support
+
+#endif // RANGE_SPACE_REMESHING_BENCHMARK_SUPPORT_H
