@@ -33,6 +33,15 @@ macro(run expected output)
   endif()
 endmacro()
 
+# The last failing run's message must match `pattern` (a regular expression).
+function(expect_message pattern what)
+  if(NOT err MATCHES "${pattern}")
+    message(SEND_ERROR "${what}: unexpected message: ${err}")
+    math(EXPR count "${failures} + 1")
+    set(failures ${count} PARENT_SCOPE)
+  endif()
+endfunction()
+
 set(elephant ${MESH_DIR}/elephant.off)
 
 # ------------------------------------------------------------------ success
@@ -305,10 +314,7 @@ run(2 x.off garbage.ply x.off)
 # CGAL's PLY reader reads out of bounds on this header (found by the fuzzer)
 file(WRITE ${WORK_DIR}/property_first.ply "ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n0\n")
 run(2 x.off property_first.ply x.off)
-if(NOT err MATCHES "property before any element")
-  message(SEND_ERROR "property_first.ply: unexpected message: ${err}")
-  math(EXPR failures "${failures} + 1")
-endif()
+expect_message("property before any element" property_first.ply)
 # a negative count made CGAL's PLY reader allocate for minutes (found by the fuzzer)
 file(WRITE ${WORK_DIR}/negative_count.ply "ply\nformat ascii 1.0\nelement vertex -12\nproperty float x\nend_header\n0\n")
 run(2 x.off negative_count.ply x.off)
@@ -317,16 +323,10 @@ run(2 x.off negative_count.ply x.off)
 file(WRITE ${WORK_DIR}/huge_degree.off
      "OFF # comment\n# comment line\n\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n1e09 3\n")
 run(2 x.off huge_degree.off x.off)
-if(NOT err MATCHES "OFF face whose degree cannot be right \\(line 12: '1e09'\\)")
-  message(SEND_ERROR "huge_degree.off: unexpected message: ${err}")
-  math(EXPR failures "${failures} + 1")
-endif()
+expect_message("OFF face whose degree cannot be right \\(line 12: '1e09'\\)" huge_degree.off)
 file(WRITE ${WORK_DIR}/huge_count.off "OFF\n4 4e12 0\n0 0 0\n")
 run(2 x.off huge_count.off x.off)
-if(NOT err MATCHES "OFF count that cannot be right")
-  message(SEND_ERROR "huge_count.off: unexpected message: ${err}")
-  math(EXPR failures "${failures} + 1")
-endif()
+expect_message("OFF count that cannot be right" huge_count.off)
 # the same guard leaves valid files alone: a commented OFF with colours reads
 file(WRITE ${WORK_DIR}/commented.off
      "COFF\n# a tetrahedron\n4 4 6\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n0 0 1 9 9 9 255\n"

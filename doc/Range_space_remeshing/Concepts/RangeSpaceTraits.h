@@ -46,7 +46,9 @@ public:
 
   /// \name Operations
   /// @{
+  /*! the `Orientation_2` predicate */
   Orientation_2 orientation_2_object() const;
+  /*! the `Orientation_3` predicate */
   Orientation_3 orientation_3_object() const;
   /// @}
 };
