@@ -13,6 +13,7 @@
 #include <CGAL/Range_space_remeshing/insert_crease_triangles.h>
 
 #include <algorithm>
+#include <limits>
 
 using namespace test;
 namespace params = CGAL::parameters;
@@ -380,6 +381,40 @@ void test_crease_triangles()
   CHECK_EQ(euler_characteristic(remesh), 2L);
 }
 
+/// Vertex normals of meshes at extreme scales: unit, or zero where there is no normal,
+/// never NaN (the squared length of 1e200 or 1e-200 vectors over- or underflows).
+void test_extreme_normals()
+{
+  for(double scale : {1e-200, 1e-100, 1.0, 1e100, 1e200}) {
+    Mesh sphere = make_sphere(1.0, 2);
+    for(auto v : vertices(sphere))
+      sphere.point(v) = Point(scale * sphere.point(v).x(), scale * sphere.point(v).y(), scale * sphere.point(v).z());
+    const RSR::Lazy_vertex_normal_map<Mesh> normals(sphere);
+    double worst = 0; // |1 - |n|| and the angle to the radial direction
+    for(auto v : vertices(sphere)) {
+      const Point p(sphere.point(v).x() / scale, sphere.point(v).y() / scale, sphere.point(v).z() / scale);
+      const double distance = std::sqrt(CGAL::square(p.x()) + CGAL::square(p.y()) + CGAL::square(p.z()));
+      // the normal maps' normal, and the one the primal's polygons get in the dual
+      for(const auto& n : {get(normals, v), RSR::internal::area_weighted_vertex_normal(
+                                                v, sphere, get(CGAL::vertex_point, sphere))}) {
+        const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        const double radial = (n[0] * p.x() + n[1] * p.y() + n[2] * p.z()) / distance;
+        worst = std::max({worst, std::abs(1 - length), 1 - radial});
+        if(!std::isfinite(length) || !std::isfinite(radial))
+          worst = std::numeric_limits<double>::infinity();
+      }
+    }
+    std::cout << "normals at scale " << scale << ": worst deviation " << worst << std::endl;
+    CHECK(worst < 0.05);
+  }
+  using RSR::internal::normalized;
+  const auto zero = RSR::internal::Vec3{{0, 0, 0}};
+  CHECK(normalized({{std::numeric_limits<double>::quiet_NaN(), 1, 1}}) == zero);
+  CHECK(normalized({{1, std::numeric_limits<double>::quiet_NaN(), 1}}) == zero);
+  CHECK(normalized({{std::numeric_limits<double>::infinity(), 0, 0}}) == zero);
+  CHECK(normalized({{0, 0, 0}}) == zero);
+}
+
 int main()
 {
   test_gauss_map_anisotropy();
@@ -389,5 +424,6 @@ int main()
   test_color_maps();
   test_view_map();
   test_crease_triangles();
+  test_extreme_normals();
   return report("test_range_maps");
 }

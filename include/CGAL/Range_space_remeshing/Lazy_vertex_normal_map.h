@@ -13,6 +13,7 @@
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/property_map.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -67,15 +68,40 @@ public:
 private:
   value_type normal(key_type v) const
   {
+    const internal::Vec3 sum = weighted_sum(v, 1.);
+    const internal::Vec3 unit = internal::normalized(sum);
+    if(unit[0] != 0 || unit[1] != 0 || unit[2] != 0)
+      return unit;
+    // Nothing, or an overflow: with coordinates near 1e-200 or 1e200 the cross
+    // products under- or overflow. Both weightings are scale-invariant in direction:
+    // retry with the star scaled to unit size (rare, so the common case pays nothing).
+    double largest = 0;
+    const internal::Vec3 p = internal::to_vec3(get(vpm_, v));
+    for(auto w : CGAL::vertices_around_target(v, *tm_)) {
+      const internal::Vec3 d = internal::difference(internal::to_vec3(get(vpm_, w)), p);
+      largest = (std::max)({largest, std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
+    }
+    return largest > 0 && std::isfinite(largest) ? internal::normalized(weighted_sum(v, 1. / largest)) : unit;
+  }
+
+  /// The sum of the faces' normals around v, weighted, with the star scaled by `scale`.
+  internal::Vec3 weighted_sum(key_type v, double scale) const
+  {
     using internal::Vec3;
     Vec3 sum = {{0, 0, 0}};
     const Vec3 p = internal::to_vec3(get(vpm_, v));
+    auto edge_to = [&](auto w) {
+      Vec3 d = internal::difference(internal::to_vec3(get(vpm_, w)), p);
+      for(double& x : d)
+        x *= scale;
+      return d;
+    };
     for(auto h : CGAL::halfedges_around_target(v, *tm_)) {
       if(is_border(h, *tm_))
         continue;
       // the face's corner at v: from v to the next and the previous corner
-      const Vec3 to_next = internal::difference(internal::to_vec3(get(vpm_, target(next(h, *tm_), *tm_))), p);
-      const Vec3 to_previous = internal::difference(internal::to_vec3(get(vpm_, source(h, *tm_))), p);
+      const Vec3 to_next = edge_to(target(next(h, *tm_), *tm_));
+      const Vec3 to_previous = edge_to(source(h, *tm_));
       const Vec3 twice_area_normal = internal::cross(to_next, to_previous);
       double weight = 1; // AREA: the cross product's length is the weight
       if(weighting_ == Normal_weighting::ANGLE) {
@@ -87,7 +113,7 @@ private:
       for(int d = 0; d < 3; ++d)
         sum[d] += weight * twice_area_normal[d];
     }
-    return internal::normalized(sum);
+    return sum;
   }
 
   const TriangleMesh* tm_;

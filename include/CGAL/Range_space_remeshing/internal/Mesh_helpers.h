@@ -44,28 +44,54 @@ std::size_t index_bound(const Range& range, IndexMap index)
   return bound;
 }
 
-/// The unit normal of vertex v: the sum of its faces' area vectors (Newell's, so that
-/// polygons are welcome), normalised; zero if they all vanish. Not CGAL's
-/// `compute_vertex_normal()`: its visibility-maximising normal cost more than half of
-/// the contouring time when the output asks for normals, and its circumcentre
-/// construction asserts on underflowing coordinates (found by the fuzzer).
+/// The sum of the Newell area vectors of the faces around v, with the coordinates
+/// taken relative to v and multiplied by `scale`.
 template <class PolygonMesh, class VertexPointMap>
-Vec3 area_weighted_vertex_normal(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
-                                 const PolygonMesh& mesh, VertexPointMap vpm)
+Vec3 sum_of_face_areas(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v, const PolygonMesh& mesh,
+                       VertexPointMap vpm, double scale)
 {
+  const Vec3 origin = to_vec3(get(vpm, v));
+  auto local = [&](auto w) {
+    Vec3 x = difference(to_vec3(get(vpm, w)), origin);
+    for(double& c : x)
+      c *= scale;
+    return x;
+  };
   Vec3 sum = {{0, 0, 0}};
   for(auto h : CGAL::halfedges_around_target(halfedge(v, mesh), mesh)) {
     if(is_border(h, mesh))
       continue;
     for(auto e : CGAL::halfedges_around_face(h, mesh)) { // Newell's sum over the face's edges
-      const Vec3 p = to_vec3(get(vpm, source(e, mesh))), q = to_vec3(get(vpm, target(e, mesh)));
+      const Vec3 p = local(source(e, mesh)), q = local(target(e, mesh));
       sum[0] += (p[1] - q[1]) * (p[2] + q[2]);
       sum[1] += (p[2] - q[2]) * (p[0] + q[0]);
       sum[2] += (p[0] - q[0]) * (p[1] + q[1]);
     }
   }
-  const Vec3 unit = normalized(sum);
-  return std::isfinite(unit[0]) && std::isfinite(unit[1]) && std::isfinite(unit[2]) ? unit : Vec3{{0, 0, 0}};
+  return sum;
+}
+
+/// The unit normal of vertex v: the sum of its faces' area vectors (Newell's, so that
+/// polygons are welcome), normalised; zero if they all vanish. Not CGAL's
+/// `compute_vertex_normal()`: its visibility-maximising normal cost more than half of
+/// the contouring time when the output asks for normals, and its circumcentre
+/// construction asserts on underflowing coordinates (found by the fuzzer). Where the
+/// sum under- or overflows (coordinates near 1e-200 or 1e200), the star is scaled to
+/// unit size and summed again: the direction does not depend on the scale.
+template <class PolygonMesh, class VertexPointMap>
+Vec3 area_weighted_vertex_normal(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
+                                 const PolygonMesh& mesh, VertexPointMap vpm)
+{
+  const Vec3 unit = normalized(sum_of_face_areas(v, mesh, vpm, 1.));
+  if(unit[0] != 0 || unit[1] != 0 || unit[2] != 0)
+    return unit;
+  double largest = 0;
+  const Vec3 p = to_vec3(get(vpm, v));
+  for(auto h : CGAL::halfedges_around_target(halfedge(v, mesh), mesh)) {
+    const Vec3 d = difference(to_vec3(get(vpm, source(h, mesh))), p);
+    largest = (std::max)({largest, std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
+  }
+  return largest > 0 && std::isfinite(largest) ? normalized(sum_of_face_areas(v, mesh, vpm, 1. / largest)) : unit;
 }
 
 /// The tangent planes of a mesh that comes without any (one it did not produce): for

@@ -41,8 +41,10 @@ inline Vec3 to_vec3(const Vec3& v) { return v; }
 /// under- or overflow in the squared length.
 inline Vec3 normalized(const Vec3& v)
 {
+  if(!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+    return Vec3{{0, 0, 0}};
   const double largest = (std::max)({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
-  if(!(largest > 0) || !std::isfinite(largest))
+  if(!(largest > 0))
     return Vec3{{0, 0, 0}};
   const Vec3 w = {{v[0] / largest, v[1] / largest, v[2] / largest}};
   const double length = std::sqrt(dot(w, w));
