@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <utility>
 #include <vector>
 
@@ -33,6 +34,22 @@ inline double bbox_diagonal(const Mesh& m)
   const auto box = CGAL::Polygon_mesh_processing::bbox(m);
   return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                    CGAL::square(box.zmax() - box.zmin()));
+}
+
+/// The parameter (a cell size, an edge length) at which `run(parameter)` gives
+/// `target` output vertices within 3 %: secant steps on the square root of the vertex
+/// count, from `first_guess`.
+template <class Run>
+double cell_size_for(Run run, double first_guess, std::size_t target)
+{
+  double h = first_guess;
+  for(int step = 0; step < 25; ++step) {
+    const double ratio = double(run(h)) / double(target);
+    if(std::abs(ratio - 1) < 0.03)
+      break;
+    h *= std::sqrt(std::clamp(ratio, 0.25, 4.));
+  }
+  return h;
 }
 
 /// RMS and maximum of the distances from `samples` points spread uniformly over the

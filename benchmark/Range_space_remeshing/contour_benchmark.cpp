@@ -82,19 +82,15 @@ Measure measure(const Mesh& input, double h, RSR::Seeding_method seeding, int ru
   return m;
 }
 
-/// Cell size giving about `target` output vertices (within 3 %).
-double cell_size_for(const Mesh& input, std::size_t target)
+/// Cell size giving about `target` output vertices (within 3 %), complete scan.
+double identity_cell_size_for(const Mesh& input, std::size_t target)
 {
-  double h = 0.01 * bbox_diagonal(input);
-  for(int iteration = 0; iteration < 20; ++iteration) {
-    double wall;
-    const auto stats = run_once(input, h, RSR::Seeding_method::COMPLETE_SCAN, wall);
-    const double ratio = double(stats.output_vertices) / double(target);
-    if(std::abs(ratio - 1) < 0.03)
-      break;
-    h *= std::sqrt(ratio);
-  }
-  return h;
+  return benchmark_support::cell_size_for(
+      [&](double h) {
+        double wall;
+        return run_once(input, h, RSR::Seeding_method::COMPLETE_SCAN, wall).output_vertices;
+      },
+      0.01 * bbox_diagonal(input), target);
 }
 
 /// RMS and maximum of the distances from points sampled on `from` to `to`.
@@ -191,15 +187,13 @@ void measure_dimensions(const std::string& name, Mesh input, std::size_t target,
     return stats.time_total_ms;
   };
   for(int d : {3, 6, 9}) {
-    double h = 0.01 * diagonal;
     std::size_t vertices = 0;
-    for(int iteration = 0; iteration < 20; ++iteration) { // cell size for the target
-      timed(h, d, vertices);
-      const double ratio = double(vertices) / double(target);
-      if(std::abs(ratio - 1) < 0.03)
-        break;
-      h *= std::sqrt(ratio);
-    }
+    const double h = benchmark_support::cell_size_for(
+        [&](double h) {
+          timed(h, d, vertices);
+          return vertices;
+        },
+        0.01 * diagonal, target);
     std::vector<double> times;
     timed(h, d, vertices); // warm-up
     for(int r = 0; r < runs; ++r)
@@ -243,7 +237,7 @@ int main(int argc, char** argv)
       std::cerr << "cannot read " << file << std::endl;
       return 2;
     }
-    const double h = cell_size_for(input, num_vertices(input) / 4);
+    const double h = identity_cell_size_for(input, num_vertices(input) / 4);
     std::string name = file.substr(file.find_last_of('/') + 1);
     for(auto seeding : {RSR::Seeding_method::COMPLETE_SCAN, RSR::Seeding_method::SEEDED}) {
       const Measure m = measure(input, h, seeding, runs);

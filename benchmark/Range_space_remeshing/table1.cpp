@@ -156,21 +156,6 @@ std::vector<Mesh::Face_index> one_face_per_component(const Mesh& mesh)
 /// A remeshing job at cell size h: fills `output`, returns its statistics.
 using Pipeline = std::function<RSR::Remesh_statistics(double h, Mesh& output)>;
 
-/// Cell size (by secant steps on the square root of the vertex count) at which
-/// `run` gives `target` output vertices within 3 %.
-template <class Run>
-double cell_size_for(Run run, double first_guess, std::size_t target)
-{
-  double h = first_guess;
-  for(int step = 0; step < 25; ++step) {
-    const double ratio = double(run(h)) / double(target);
-    if(std::abs(ratio - 1) < 0.03)
-      break;
-    h *= std::sqrt(std::clamp(ratio, 0.25, 4.));
-  }
-  return h;
-}
-
 struct Pipeline_result
 {
   double h = 0;
