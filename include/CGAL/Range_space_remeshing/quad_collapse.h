@@ -41,9 +41,10 @@ involved, and only if the result stays a valid manifold mesh:
 - a and c are not constrained (`vertex_is_constrained_map`).
 
 The merged vertex takes the union of the two vertices' tangent planes (their quadric
-error), and is placed as in the relaxation: on the line through the midpoint along
-the average normal, at the minimiser of the squared distances to the merged tangent
-planes. Collapses are tried in passes, in decreasing order of energy decrease, until a
+error), and is placed as in the relaxation: the midpoint moved to the nearest
+minimiser of the squared distances to the merged tangent planes, along the directions
+they constrain (the normal in a smooth region; onto the crease line where the planes
+of two sides meet). Collapses are tried in passes, in decreasing order of energy decrease, until a
 pass collapses nothing or `number_of_iterations` passes have run.
 
 \tparam PolygonMesh a model of `MutableFaceGraph` (e.g. `Surface_mesh`, `Polyhedron_3`).

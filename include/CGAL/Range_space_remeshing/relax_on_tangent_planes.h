@@ -32,10 +32,14 @@ namespace Range_space_remeshing {
 relaxes the vertices of `mesh` over the surface they sample (section 6 of the paper).
 Each of the `number_of_iterations` iterations (a) replaces every vertex's position
 and normal by the average of its neighbours' (the normal renormalised), which spreads
-the vertices evenly but shrinks and smooths, then (b) moves it back along the line
-\f$v' + \lambda n'\f$ to the minimiser of the squared distances to its tangent planes,
-\f$\lambda = \sum \langle v_i - v', n_i\rangle \langle n', n_i\rangle / (\sum \langle n', n_i\rangle^2 + \epsilon)\f$,
-which undoes the shrinking: vertices slide on the surface, features stay.
+the vertices evenly but shrinks and smooths, then (b) moves it back to the nearest
+minimiser of the squared distances to its tangent planes, along the directions those
+planes constrain and no other (directions whose eigenvalue in the planes' quadric is
+below a tenth of the largest are free). This undoes the shrinking: in a smooth region
+the vertex moves along the normal only, as the paper's projection on the line
+\f$v' + \lambda n'\f$ does, and slides freely on the surface; on a crease, where the
+planes of both sides meet, it goes back onto the crease line, and at a corner onto the
+corner, which the paper's single line could not reach.
 
 Border vertices (paper, section 7) are averaged with their two border neighbours only,
 and put back on the border they sample, so that it does not shrink: with
@@ -145,7 +149,16 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
     }
   };
 
-  constexpr double epsilon = 1e-3; // the weak extra plane at (v', n'): never singular
+  // Each vertex's quadric, decomposed once: the projection that undoes the shrinking.
+  std::vector<internal::Quadric_projection> projection(n);
+  for(vertex_descriptor v : vertices(mesh)) {
+    const std::size_t i = get(vertex_index, v);
+    if(on_border[i])
+      continue;
+    internal::Quadric quadric;
+    quadric.add_planes(get(tangent_planes, v));
+    projection[i] = internal::Quadric_projection(quadric, internal::quadric_truncation, &normal[i]);
+  }
   for(int iteration = 0; iteration < iterations; ++iteration) {
     for(vertex_descriptor v : vertices(mesh)) {
       const std::size_t i = get(vertex_index, v);
@@ -170,14 +183,12 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
         next_normal[i] = m == Vec3{{0, 0, 0}} ? normal[i] : m;
         continue;
       }
-      if(planes.empty() || m == Vec3{{0, 0, 0}}) { // nothing to project on: keep the vertex
+      if(projection[i].constrained_directions() == 0 || m == Vec3{{0, 0, 0}}) { // nothing to project on
         next_position[i] = position[i];
         next_normal[i] = normal[i];
         continue;
       }
-      const double lambda = internal::line_minimiser(p, m, planes, epsilon);
-      for(int d = 0; d < 3; ++d)
-        next_position[i][d] = p[d] + lambda * m[d];
+      next_position[i] = projection[i](internal::clamped_to_points_box(p, planes));
       next_normal[i] = m;
     }
     position.swap(next_position);

@@ -216,15 +216,19 @@ private:
     return true;
   }
 
-  /// The paper's placement: the midpoint of a and c moved along their average normal
-  /// to the minimiser of the distances to the union of their tangent planes.
+  /// The paper's placement, generalised as in the relaxation: the midpoint of a and c
+  /// moved to the nearest minimiser of the distances to the union of their tangent
+  /// planes (along the normal in a smooth region, onto the line of a crease).
   Vec3 merged_position(halfedge_descriptor h0) const
   {
     const vertex_descriptor a = source(h0, mesh_), c = target(next(h0, mesh_), mesh_);
     const Vec3 pa = position(a), pc = position(c);
     const Vec3 mid = {{(pa[0] + pc[0]) / 2, (pa[1] + pc[1]) / 2, (pa[2] + pc[2]) / 2}};
+    Quadric quadric;
+    quadric.add_planes(get(planes_, a));
+    quadric.add_planes(get(planes_, c));
     const Vec3 n = merged_normal(a, c);
-    return n == Vec3{{0, 0, 0}} ? mid : project(mid, n, a, c);
+    return Quadric_projection(quadric, quadric_truncation, n == Vec3{{0, 0, 0}} ? nullptr : &n)(mid);
   }
 
   Vec3 merged_normal(vertex_descriptor a, vertex_descriptor c) const
@@ -232,16 +236,6 @@ private:
     const Vec3& na = normals_[index(a)];
     const Vec3& nc = normals_[index(c)];
     return normalized(Vec3{{na[0] + nc[0], na[1] + nc[1], na[2] + nc[2]}});
-  }
-
-  /// lambda of the paper's line-restricted quadric, over the planes of a and c together.
-  Vec3 project(const Vec3& x, const Vec3& n, vertex_descriptor a, vertex_descriptor c) const
-  {
-    double numerator = 0, denominator = epsilon_;
-    add_line_quadric(x, n, get(planes_, a), numerator, denominator);
-    add_line_quadric(x, n, get(planes_, c), numerator, denominator);
-    const double lambda = numerator / denominator;
-    return {{x[0] + lambda * n[0], x[1] + lambda * n[1], x[2] + lambda * n[2]}};
   }
 
   /// Whether every face around a and c (but the quad) stays unfolded once a and c are
@@ -405,7 +399,6 @@ private:
       set_halfedge(f, replacement, mesh_);
   }
 
-  static constexpr double epsilon_ = 1e-3; // as in the relaxation: never singular
 
   PolygonMesh& mesh_;
   VertexPointMap vpm_;

@@ -213,57 +213,96 @@ public:
   /// eigenvalue is below `truncation` times the largest are left at the mass point
   /// (a flat region has one constrained direction, a crease two, a corner three).
   /// `normal_guess` (unit, or null) speeds the eigen-decomposition up; see `symmetric_eigen_3`.
-  Vec3 minimiser(const Vec3& mass_point, double truncation = 0.1, const Vec3* normal_guess = nullptr) const
+  Vec3 minimiser(const Vec3& mass_point, double truncation = 0.1, const Vec3* normal_guess = nullptr) const;
+
+  template <class PlaneRange>
+  void add_planes(const PlaneRange& planes)
   {
-    if(planes_ == 0)
-      return mass_point;
-    Vec3 values;
-    std::array<Vec3, 3> vectors;
-    symmetric_eigen_3(a_, values, vectors, normal_guess);
-    const double largest = std::max({std::abs(values[0]), std::abs(values[1]), std::abs(values[2])});
-    // residual at the mass point: b - A c
-    Vec3 r = b_;
-    for(int i = 0; i < 3; ++i)
-      for(int j = 0; j < 3; ++j)
-        r[i] -= a_[i][j] * mass_point[j];
-    Vec3 x = mass_point;
-    for(int k = 0; k < 3; ++k) {
-      if(!(values[k] > truncation * largest) || !(largest > 0))
-        continue;
-      const double step = dot(vectors[k], r) / values[k];
-      for(int i = 0; i < 3; ++i)
-        x[i] += step * vectors[k][i];
-    }
-    return x;
+    for(const auto& plane : planes)
+      add_plane(plane.first, plane.second);
   }
 
 private:
   std::array<std::array<double, 3>, 3> a_ = {};
   Vec3 b_ = {};
   int planes_ = 0;
+
+  friend class Quadric_projection;
 };
 
-/// Adds the planes' terms of the paper's line-restricted quadric (see
-/// `line_minimiser`): lambda = numerator / denominator once all planes are in.
+/// x clamped to the bounding box of the planes' points: a vertex relaxed on tangent
+/// planes stays over the piece of surface they sample (beyond it, past a crease, say,
+/// the planes no longer describe the surface).
 template <class PlaneRange>
-void add_line_quadric(const Vec3& x, const Vec3& n, const PlaneRange& planes, double& numerator,
-                      double& denominator)
+Vec3 clamped_to_points_box(Vec3 x, const PlaneRange& planes)
 {
-  for(const auto& plane : planes) {
-    const double cosine = dot(n, plane.second);
-    numerator += dot(difference(plane.first, x), plane.second) * cosine;
-    denominator += cosine * cosine;
-  }
+  if(planes.empty())
+    return x;
+  Vec3 low = planes.begin()->first, high = low;
+  for(const auto& plane : planes)
+    for(int d = 0; d < 3; ++d) {
+      low[d] = (std::min)(low[d], plane.first[d]);
+      high[d] = (std::max)(high[d], plane.first[d]);
+    }
+  for(int d = 0; d < 3; ++d)
+    x[d] = (std::min)((std::max)(x[d], low[d]), high[d]);
+  return x;
 }
 
-/// The paper's projection: the minimiser of sum <p_i - (x + lambda n), n_i>^2 +
-/// epsilon lambda^2 over lambda, for a unit direction n. Returns lambda.
-template <class PlaneRange>
-double line_minimiser(const Vec3& x, const Vec3& n, const PlaneRange& planes, double epsilon)
+/// Eigenvalues below this fraction of the largest count as free directions: the
+/// normals of a smoothly curved piece spread a little, those of a crease a lot.
+constexpr double quadric_truncation = 0.1;
+
+/// Moves points to the nearest minimisers of a quadric, along the directions it
+/// constrains and no other: onto the plane in a flat region, onto the line of a
+/// crease, to the point of a corner. The eigen-decomposition is done once, so
+/// projecting many points (one per relaxation iteration) costs a few dot products.
+/// Directions whose eigenvalue is below `truncation` times the largest are free.
+class Quadric_projection
 {
-  double numerator = 0, denominator = epsilon;
-  add_line_quadric(x, n, planes, numerator, denominator);
-  return numerator / denominator;
+public:
+  Quadric_projection() = default; // projects nothing: every direction free
+
+  Quadric_projection(const Quadric& q, double truncation, const Vec3* normal_guess = nullptr)
+  {
+    if(q.planes_ == 0)
+      return;
+    Vec3 values;
+    std::array<Vec3, 3> vectors;
+    symmetric_eigen_3(q.a_, values, vectors, normal_guess);
+    const double largest = std::max({std::abs(values[0]), std::abs(values[1]), std::abs(values[2])});
+    for(int k = 0; k < 3; ++k) {
+      if(!(largest > 0) || !(values[k] > truncation * largest))
+        continue;
+      // along v_k the quadric is values[k] (<v_k, x> - <v_k, b> / values[k])^2
+      directions_[constrained_] = vectors[k];
+      levels_[constrained_] = dot(vectors[k], q.b_) / values[k];
+      ++constrained_;
+    }
+  }
+
+  int constrained_directions() const { return constrained_; }
+
+  Vec3 operator()(const Vec3& x) const
+  {
+    Vec3 y = x;
+    for(int k = 0; k < constrained_; ++k) {
+      const double step = levels_[k] - dot(directions_[k], x);
+      for(int i = 0; i < 3; ++i)
+        y[i] += step * directions_[k][i];
+    }
+    return y;
+  }
+
+private:
+  std::array<Vec3, 3> directions_ = {};
+  std::array<double, 3> levels_ = {};
+  int constrained_ = 0;
+};
+
+inline Vec3 Quadric::minimiser(const Vec3& mass_point, double truncation, const Vec3* normal_guess) const
+{
+  return Quadric_projection(*this, truncation, normal_guess)(mass_point);
 }
 
 } // namespace internal
