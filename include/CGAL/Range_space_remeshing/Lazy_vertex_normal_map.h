@@ -6,6 +6,7 @@
 #ifndef CGAL_RANGE_SPACE_REMESHING_LAZY_VERTEX_NORMAL_MAP_H
 #define CGAL_RANGE_SPACE_REMESHING_LAZY_VERTEX_NORMAL_MAP_H
 
+#include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -75,12 +76,7 @@ private:
     // Nothing, or an overflow: with coordinates near 1e-200 or 1e200 the cross
     // products under- or overflow. Both weightings are scale-invariant in direction:
     // retry with the star scaled to unit size (rare, so the common case pays nothing).
-    double largest = 0;
-    const internal::Vec3 p = internal::to_vec3(get(vpm_, v));
-    for(auto w : CGAL::vertices_around_target(v, *tm_)) {
-      const internal::Vec3 d = internal::difference(internal::to_vec3(get(vpm_, w)), p);
-      largest = (std::max)({largest, std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
-    }
+    const double largest = internal::star_extent(v, *tm_, vpm_);
     return largest > 0 && std::isfinite(largest) ? internal::normalized(weighted_sum(v, 1. / largest)) : unit;
   }
 

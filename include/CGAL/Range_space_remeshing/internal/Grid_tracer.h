@@ -149,6 +149,12 @@ public:
       scan_crossed_levels(t, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
         find_or_create(face_id, i, j, k, m, o, /*queue*/ true);
       });
+    create_border_crossings_of(face_id);
+  }
+
+  /// Creates the boundary vertices on the border edges of a face, if it has any.
+  void create_border_crossings_of(std::uint32_t face_id)
+  {
     for(int e = 0; e < 3; ++e)
       if(records_[face_id].neighbour[e] == border)
         border_crossings(face_id, e);
@@ -172,14 +178,14 @@ public:
                       });
     number_of_mapped_ = all_vertices.size();
 
-    all_faces_.assign(faces(tm_).begin(), faces(tm_).end());
-    all_face_ids_.resize(all_faces_.size());
-    for(std::size_t i = 0; i < all_faces_.size(); ++i) {
-      all_face_ids_[i] = std::uint32_t(get(face_index_, all_faces_[i]));
-      face_of_id_[all_face_ids_[i]] = all_faces_[i];
+    const std::vector<face_descriptor> all_faces(faces(tm_).begin(), faces(tm_).end());
+    all_face_ids_.resize(all_faces.size());
+    for(std::size_t i = 0; i < all_faces.size(); ++i) {
+      all_face_ids_[i] = std::uint32_t(get(face_index_, all_faces[i]));
+      face_of_id_[all_face_ids_[i]] = all_faces[i];
     }
     std::atomic<bool> border_seen(false);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, all_faces_.size(), 2048),
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, all_faces.size(), 2048),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         bool border_here = false;
                         for(std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -193,7 +199,7 @@ public:
                           border_seen = true;
                       });
     seen_border_ = seen_border_ || border_seen;
-    number_of_visited_faces_ = all_faces_.size();
+    number_of_visited_faces_ = all_faces.size();
   }
 
   /// The second half: the exact tests of every face on all threads, then, on this
@@ -209,7 +215,7 @@ public:
       std::int32_t k, m;
     };
     constexpr std::size_t chunk = 1024; // faces per task: the merge below needs the order
-    const std::size_t n = all_faces_.size(), chunks = (n + chunk - 1) / chunk;
+    const std::size_t n = all_face_ids_.size(), chunks = (n + chunk - 1) / chunk;
     std::vector<std::vector<Found>> found(chunks);
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks), [&](const tbb::blocked_range<std::size_t>& range) {
       for(std::size_t c = range.begin(); c != range.end(); ++c)
@@ -228,9 +234,7 @@ public:
         const std::uint32_t face_id = all_face_ids_[position];
         for(; next != found[c].end() && next->position == position; ++next)
           find_or_create(face_id, next->i, next->j, next->k, next->m, next->orientation, /*queue*/ true);
-        for(int e = 0; e < 3; ++e)
-          if(records_[face_id].neighbour[e] == border)
-            border_crossings(face_id, e);
+        create_border_crossings_of(face_id);
       }
     }
   }
@@ -1209,8 +1213,7 @@ private:
 
   std::vector<Vertex> vertices_;
   std::vector<face_descriptor> face_of_id_;
-  std::vector<face_descriptor> all_faces_;  // the parallel scan's order: faces(tm)
-  std::vector<std::uint32_t> all_face_ids_; // and their indices
+  std::vector<std::uint32_t> all_face_ids_; // the parallel scan's order: faces(tm), by index
   Vertex_table table_;
   std::deque<std::uint32_t> queue_;
 };

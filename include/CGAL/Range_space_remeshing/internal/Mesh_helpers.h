@@ -71,6 +71,21 @@ Vec3 sum_of_face_areas(typename boost::graph_traits<PolygonMesh>::vertex_descrip
   return sum;
 }
 
+/// The largest coordinate offset from v to a neighbour: the scale of its star, by
+/// which normals are summed again where the cross products under- or overflowed.
+template <class PolygonMesh, class VertexPointMap>
+double star_extent(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v, const PolygonMesh& mesh,
+                   VertexPointMap vpm)
+{
+  double largest = 0;
+  const Vec3 p = to_vec3(get(vpm, v));
+  for(auto w : CGAL::vertices_around_target(v, mesh)) {
+    const Vec3 d = difference(to_vec3(get(vpm, w)), p);
+    largest = (std::max)({largest, std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
+  }
+  return largest;
+}
+
 /// The unit normal of vertex v: the sum of its faces' area vectors (Newell's, so that
 /// polygons are welcome), normalised; zero if they all vanish. Not CGAL's
 /// `compute_vertex_normal()`: its visibility-maximising normal cost more than half of
@@ -85,12 +100,7 @@ Vec3 area_weighted_vertex_normal(typename boost::graph_traits<PolygonMesh>::vert
   const Vec3 unit = normalized(sum_of_face_areas(v, mesh, vpm, 1.));
   if(unit[0] != 0 || unit[1] != 0 || unit[2] != 0)
     return unit;
-  double largest = 0;
-  const Vec3 p = to_vec3(get(vpm, v));
-  for(auto h : CGAL::halfedges_around_target(halfedge(v, mesh), mesh)) {
-    const Vec3 d = difference(to_vec3(get(vpm, source(h, mesh))), p);
-    largest = (std::max)({largest, std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
-  }
+  const double largest = star_extent(v, mesh, vpm);
   return largest > 0 && std::isfinite(largest) ? normalized(sum_of_face_areas(v, mesh, vpm, 1. / largest)) : unit;
 }
 
