@@ -399,7 +399,6 @@ private:
       set_halfedge(f, replacement, mesh_);
   }
 
-
   PolygonMesh& mesh_;
   VertexPointMap vpm_;
   TangentPlanesMap planes_;

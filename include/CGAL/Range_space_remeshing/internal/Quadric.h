@@ -189,6 +189,10 @@ inline void symmetric_eigen_3(std::array<std::array<double, 3>, 3> a, Vec3& valu
   }
 }
 
+/// Eigenvalues below this fraction of the largest count as free directions: the
+/// normals of a smoothly curved piece spread a little, those of a crease a lot.
+constexpr double quadric_truncation = 0.1;
+
 /// Accumulates tangent planes; normals need not be unit (zero ones are ignored).
 class Quadric
 {
@@ -213,7 +217,8 @@ public:
   /// eigenvalue is below `truncation` times the largest are left at the mass point
   /// (a flat region has one constrained direction, a crease two, a corner three).
   /// `normal_guess` (unit, or null) speeds the eigen-decomposition up; see `symmetric_eigen_3`.
-  Vec3 minimiser(const Vec3& mass_point, double truncation = 0.1, const Vec3* normal_guess = nullptr) const;
+  Vec3 minimiser(const Vec3& mass_point, double truncation = quadric_truncation,
+                 const Vec3* normal_guess = nullptr) const;
 
   template <class PlaneRange>
   void add_planes(const PlaneRange& planes)
@@ -248,10 +253,6 @@ Vec3 clamped_to_points_box(Vec3 x, const PlaneRange& planes)
     x[d] = (std::min)((std::max)(x[d], low[d]), high[d]);
   return x;
 }
-
-/// Eigenvalues below this fraction of the largest count as free directions: the
-/// normals of a smoothly curved piece spread a little, those of a crease a lot.
-constexpr double quadric_truncation = 0.1;
 
 /// Moves points to the nearest minimisers of a quadric, along the directions it
 /// constrains and no other: onto the plane in a flat region, onto the line of a
