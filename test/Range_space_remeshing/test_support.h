@@ -91,14 +91,16 @@ inline Mesh make_ellipsoid(double a, double b, double c, int subdivisions)
   return m;
 }
 
-/// Torus of radii R > r, tessellated by an nu x nv grid of split quads.
-inline Mesh make_torus(double R, double r, int nu, int nv)
+/// Torus of radius R whose tube radius at the angle u around the axis is tube(u),
+/// tessellated by an nu x nv grid of split quads.
+template <class Tube>
+Mesh make_torus_with_tube(double R, const Tube& tube, int nu, int nv)
 {
   Mesh m;
   std::vector<Mesh::Vertex_index> vs;
   for(int i = 0; i < nu; ++i)
     for(int j = 0; j < nv; ++j) {
-      const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
+      const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv, r = tube(u);
       vs.push_back(m.add_vertex(Point((R + r * std::cos(v)) * std::cos(u),
                                       (R + r * std::cos(v)) * std::sin(u), r * std::sin(v))));
     }
@@ -109,6 +111,12 @@ inline Mesh make_torus(double R, double r, int nu, int nv)
       m.add_face(id(i, j), id(i + 1, j + 1), id(i, j + 1));
     }
   return m;
+}
+
+/// Torus of radii R > r, tessellated by an nu x nv grid of split quads.
+inline Mesh make_torus(double R, double r, int nu, int nv)
+{
+  return make_torus_with_tube(R, [r](double) { return r; }, nu, nv);
 }
 
 /// Boundary of a union of unit voxels (integer corners), each square split in two

@@ -54,6 +54,45 @@ struct Statistics
   /// number of seeds the traversal started from (SEEDED) or vertices scanned (COMPLETE_SCAN)
   std::size_t seeds = 0;
 
+  /// the cell size of the run (smaller than the one asked for when
+  /// `preserve_topology` had to refine it)
+  double cell_size = 0;
+  /// \name Topology
+  /// Filled when the named parameter `check_topology` (or `preserve_topology`) is
+  /// set, by the complete scan only (see `Topology_defect_kind`).
+  /// @{
+  bool topology_checked = false;
+  /// closed curves where the surface meets a grid hyperplane without reaching a
+  /// grid edge: no arc traces them
+  std::size_t closed_loops = 0;
+  /// closed loops that only cut a disk-shaped cap off the surface (the surface
+  /// pokes through a grid face without reaching a grid edge, typically where it
+  /// touches a grid plane): the output, covering it by the face of the cell on the
+  /// other side, keeps the topology; not counted in `closed_loops`
+  std::size_t harmless_loops = 0;
+  /// cells where the surface is not a set of disks each bounded by one traced cycle
+  std::size_t non_disk_cells = 0;
+  /// input components that give no output
+  std::size_t lost_components = 0;
+  /// V - E + F of the input, and of the output
+  long input_euler_characteristic = 0;
+  long output_euler_characteristic = 0;
+  /// connected components of the input, and of the output
+  std::size_t input_components = 0;
+  std::size_t output_components = 0;
+  /// times `preserve_topology` reduced the cell size before the check passed
+  std::size_t topology_refinements = 0;
+  double time_topology_ms = 0;
+  /// whether the check ran and found nothing: then every region of the surface in a
+  /// cell is a disk bounded by one output face, and the output is a cell
+  /// decomposition of the input (the same topology, component by component)
+  bool topology_preserved() const
+  {
+    return topology_checked && closed_loops == 0 && non_disk_cells == 0 && lost_components == 0 &&
+           uncrossed_border_cycles == 0 && dropped_pieces == 0;
+  }
+  /// @}
+
   double time_seeding_ms = 0;
   double time_tracing_ms = 0;
   double time_faces_ms = 0;

@@ -52,6 +52,9 @@ enum seed_faces_t { seed_faces };
 enum dual_placement_t { dual_placement };
 enum vertex_tangent_planes_map_t { vertex_tangent_planes_map };
 enum quad_collapse_t { quad_collapse };
+enum check_topology_t { check_topology };
+enum preserve_topology_t { preserve_topology };
+enum topology_visitor_t { topology_visitor };
 } // namespace internal_np
 
 namespace parameters {
@@ -86,6 +89,17 @@ CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(vertex_tangent_planes_map)
 /// Whether `remesh()` runs `collapse_quads()` between the dual and the relaxation
 /// (`bool`). Default: `true`.
 CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(quad_collapse)
+
+/// Whether `primal_remesh()` checks that its output has the topology of the input
+/// (`bool`, complete scan only): fills the topology fields of `Statistics` and
+/// reports each `Topology_defect` to the `topology_visitor`. Default: `false`.
+CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(check_topology)
+/// Whether `primal_remesh()` reduces the cell size until the topology check finds
+/// no defect (`bool`, complete scan only; implies `check_topology`). Default: `false`.
+CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(preserve_topology)
+/// A callable taking a `const Topology_defect<face_descriptor>&`, called for each
+/// defect the topology check finds in the output. Default: none.
+CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(topology_visitor)
 
 #undef CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER
 

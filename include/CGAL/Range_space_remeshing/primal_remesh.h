@@ -14,6 +14,8 @@
 #include <CGAL/Range_space_remeshing/internal/Grid_tracer.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_output.h>
+#include <CGAL/Range_space_remeshing/internal/Topology_check.h>
+#include <CGAL/Range_space_remeshing/Topology_defect.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -23,6 +25,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <memory>
 #include <tuple>
 #include <type_traits>
 #include <vector>
@@ -95,6 +98,95 @@ struct No_inspection
   void operator()(Tracer&, const Complex&) const {}
 };
 
+struct No_topology_visitor
+{
+  template <class Defect>
+  void operator()(const Defect&) const {}
+};
+
+// preserve_topology: the cell size shrinks by this factor until the check passes,
+// at most this many times (a factor of 2^-20 in all)
+constexpr double topology_refinement_factor = 0.70710678118654752;
+constexpr std::size_t maximum_topology_refinements = 40;
+
+/// Scans (or seeds) and traces with `tracer`, and builds the faces: the run up to
+/// the output, with its statistics. `count_pieces` prepares the closed-loop check.
+template <class TriangleMesh, class Tracer, class NamedParametersIn, bool parallel>
+std::unique_ptr<Primal_complex> trace_primal_complex(const TriangleMesh& tm, Tracer& tracer,
+                                                     const NamedParametersIn& np_in, bool seeded,
+                                                     bool count_pieces, std::integral_constant<bool, parallel>,
+                                                     Statistics& stats,
+                                                     std::chrono::steady_clock::time_point& start)
+{
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  stats.input_vertices = num_vertices(tm);
+  stats.input_faces = num_faces(tm);
+  if(!seeded) {
+    if(count_pieces)
+      tracer.count_untraced_pieces();
+#if defined(CGAL_LINKED_WITH_TBB)
+    if constexpr(parallel)
+      tracer.map_and_record_in_parallel();
+#endif
+    // Refuse before building anything when the output would exceed the cap (the
+    // estimate maps every vertex, which the scan needs anyway).
+    double expected = 0;
+    const double cap = double(tracer.maximum_number_of_vertices());
+    if(tracer.expected_number_of_vertices_exceeds(cap, expected))
+      throw Remeshing_error("the output would have about " + std::to_string(std::llround(expected)) +
+                            " vertices, more than the cap of " + std::to_string(std::llround(cap)) +
+                            ": the cell size is too small for this input");
+#if defined(CGAL_LINKED_WITH_TBB)
+    if constexpr(parallel)
+      tracer.scan_in_parallel();
+    else
+#endif
+      for(auto f : faces(tm))
+        tracer.scan_face(f); // also checks that every face is a triangle
+    stats.seeds = tracer.intersection_vertices().size();
+    if(tracer.has_seen_border())
+      stats.uncrossed_border_cycles = tracer.number_of_uncrossed_border_cycles();
+  } else {
+    // not choose_parameter(): its default argument, a pass over the whole mesh, would be
+    // evaluated even when the user gives the seeds
+    if constexpr(is_default_parameter<NamedParametersIn, internal_np::seed_faces_t>::value) {
+      for(auto f : one_face_per_component(tm, tracer.face_index_map()))
+        stats.seeds += tracer.seed_from(f) ? 1 : 0;
+    } else {
+      for(auto f : get_parameter(np_in, internal_np::seed_faces))
+        stats.seeds += tracer.seed_from(f) ? 1 : 0;
+    }
+    stats.uncrossed_border_cycles = tracer.number_of_border_cycles_of_empty_components();
+  }
+  stats.time_seeding_ms = milliseconds_since(start);
+
+  tracer.trace(/*create vertices at arc ends*/ seeded);
+  stats.time_tracing_ms = milliseconds_since(start);
+
+  const auto& vertices = tracer.intersection_vertices();
+  std::vector<std::uint32_t> links(4 * vertices.size());
+  std::vector<bool> positive(vertices.size()), boundary(vertices.size());
+  for(std::size_t v = 0; v < vertices.size(); ++v) {
+    std::copy(vertices[v].link.begin(), vertices[v].link.end(), links.begin() + 4 * v);
+    positive[v] = vertices[v].orientation > 0;
+    boundary[v] = vertices[v].is_boundary();
+  }
+  auto complex = std::make_unique<Primal_complex>(links, positive, boundary);
+  stats.time_faces_ms = milliseconds_since(start);
+
+  stats.mapped_vertices = tracer.number_of_mapped_vertices();
+  stats.visited_faces = tracer.number_of_visited_faces();
+  stats.tracing_steps = tracer.number_of_tracing_steps();
+  stats.intersection_vertices = vertices.size();
+  stats.digons = complex->number_of_digons();
+  stats.boundary_digons = complex->number_of_boundary_digons();
+  stats.boundary_corners = tracer.number_of_corners();
+  stats.non_simple_faces = complex->number_of_non_simple_faces();
+  stats.dropped_pieces = complex->number_of_dropped_pieces();
+  return complex;
+}
+
 // The whole run; `inspect(tracer, complex)` sees the intermediate structures
 // before the output is written (tests check the invariants there).
 template <class TriangleMesh, class PolygonMesh, class NamedParametersIn,
@@ -150,83 +242,60 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
   if(num_faces(tm) == 0)
     throw Remeshing_error("the input mesh has no face");
 
+  const bool preserve = choose_parameter(get_parameter(np_in, internal_np::preserve_topology), false);
+  const bool check = preserve || choose_parameter(get_parameter(np_in, internal_np::check_topology), false);
+  const bool seeded = (seeding == Seeding_method::SEEDED);
+  if(preserve && seeded)
+    throw Remeshing_error("preserve_topology needs the complete scan (Seeding_method::COMPLETE_SCAN)");
+  const auto visitor =
+      choose_parameter(get_parameter(np_in, internal_np::topology_visitor), No_topology_visitor());
+
   auto face_index = CGAL::get_initialized_face_index_map(tm, np_in);
   auto vertex_index = CGAL::get_initialized_vertex_index_map(tm, np_in);
   using Tracer = Grid_tracer<TriangleMesh, Range_map, decltype(face_index),
                                        decltype(vertex_index), Traits>;
-  Tracer tracer(tm, range_map, face_index, vertex_index, origin, cell_size,
-                maximum_vertices, traits);
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
 
-  Statistics stats;
-  stats.input_vertices = num_vertices(tm);
-  stats.input_faces = num_faces(tm);
-  const bool seeded = (seeding == Seeding_method::SEEDED);
-  if(!seeded) {
-#if defined(CGAL_LINKED_WITH_TBB)
-    if constexpr(parallel)
-      tracer.map_and_record_in_parallel();
-#endif
-    // Refuse before building anything when the output would exceed the cap (the
-    // estimate maps every vertex, which the scan needs anyway).
-    double expected = 0;
-    if(tracer.expected_number_of_vertices_exceeds(double(maximum_vertices), expected))
-      throw Remeshing_error("the output would have about " + std::to_string(std::llround(expected)) +
-                            " vertices, more than the cap of " + std::to_string(maximum_vertices) +
-                            ": the cell size is too small for this input");
-#if defined(CGAL_LINKED_WITH_TBB)
-    if constexpr(parallel)
-      tracer.scan_in_parallel();
-    else
-#endif
-      for(auto f : faces(tm))
-        tracer.scan_face(f); // also checks that every face is a triangle
-    stats.seeds = tracer.intersection_vertices().size();
-    if(tracer.has_seen_border())
-      stats.uncrossed_border_cycles = tracer.number_of_uncrossed_border_cycles();
-  } else {
-    // not choose_parameter(): its default argument, a pass over the whole mesh, would be
-    // evaluated even when the user gives the seeds
-    if constexpr(is_default_parameter<NamedParametersIn, internal_np::seed_faces_t>::value) {
-      for(auto f : one_face_per_component(tm, face_index))
-        stats.seeds += tracer.seed_from(f) ? 1 : 0;
-    } else {
-      for(auto f : get_parameter(np_in, internal_np::seed_faces))
-        stats.seeds += tracer.seed_from(f) ? 1 : 0;
+  double h = cell_size;
+  for(std::size_t refinements = 0;; ++refinements) {
+    start = std::chrono::steady_clock::now();
+    try {
+      Tracer tracer(tm, range_map, face_index, vertex_index, origin, h, maximum_vertices, traits);
+      Statistics stats;
+      stats.cell_size = h;
+      stats.topology_refinements = refinements;
+      const std::unique_ptr<Primal_complex> complex =
+          trace_primal_complex(tm, tracer, np_in, seeded, check, std::integral_constant<bool, parallel>(),
+                               stats, start);
+
+      std::vector<Topology_defect<face_descriptor>> defects;
+      if(check && !seeded) {
+        defects = Topology_check<Tracer, face_descriptor>(tracer, *complex).run(stats);
+        stats.time_topology_ms = milliseconds_since(start);
+      }
+      if(preserve && !stats.topology_preserved()) {
+        if(refinements == maximum_topology_refinements)
+          throw Remeshing_error("defects remain at every cell size tried");
+        h *= topology_refinement_factor;
+        continue;
+      }
+      for(const auto& defect : defects)
+        visitor(defect);
+      inspect(tracer, *complex);
+
+      write_primal_complex(tm, vpm, vertex_index, tracer, *complex, out, np_in, np_out, stats);
+      stats.time_output_ms = milliseconds_since(start);
+      stats.time_total_ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_total).count();
+      return stats;
+    } catch(const Remeshing_error& error) {
+      if(refinements == 0)
+        throw;
+      throw Remeshing_error("preserve_topology could not reach a cell size without topology defects (" +
+                            std::to_string(refinements) + " refinements, to cell size " + std::to_string(h) +
+                            "): " + error.what());
     }
-    stats.uncrossed_border_cycles = tracer.number_of_border_cycles_of_empty_components();
   }
-  stats.time_seeding_ms = milliseconds_since(start);
-
-  tracer.trace(/*create vertices at arc ends*/ seeded);
-  stats.time_tracing_ms = milliseconds_since(start);
-
-  const auto& vertices = tracer.intersection_vertices();
-  std::vector<std::uint32_t> links(4 * vertices.size());
-  std::vector<bool> positive(vertices.size()), boundary(vertices.size());
-  for(std::size_t v = 0; v < vertices.size(); ++v) {
-    std::copy(vertices[v].link.begin(), vertices[v].link.end(), links.begin() + 4 * v);
-    positive[v] = vertices[v].orientation > 0;
-    boundary[v] = vertices[v].is_boundary();
-  }
-  const Primal_complex complex(links, positive, boundary);
-  stats.time_faces_ms = milliseconds_since(start);
-  inspect(tracer, complex);
-
-  write_primal_complex(tm, vpm, vertex_index, tracer, complex, out, np_in, np_out, stats);
-  stats.time_output_ms = milliseconds_since(start);
-
-  stats.mapped_vertices = tracer.number_of_mapped_vertices();
-  stats.visited_faces = tracer.number_of_visited_faces();
-  stats.tracing_steps = tracer.number_of_tracing_steps();
-  stats.intersection_vertices = vertices.size();
-  stats.digons = complex.number_of_digons();
-  stats.boundary_digons = complex.number_of_boundary_digons();
-  stats.boundary_corners = tracer.number_of_corners();
-  stats.non_simple_faces = complex.number_of_non_simple_faces();
-  stats.dropped_pieces = complex.number_of_dropped_pieces();
-  stats.time_total_ms =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_total).count();
-  return stats;
 }
 
 } // namespace internal

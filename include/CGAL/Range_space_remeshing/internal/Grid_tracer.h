@@ -135,6 +135,8 @@ public:
   /// whether an input border was met (every face is recorded in a complete scan)
   bool has_seen_border() const { return seen_border_; }
   std::size_t number_of_tracing_steps() const { return tracing_steps_; }
+  std::size_t maximum_number_of_vertices() const { return maximum_vertices_; }
+  FaceIndexMap face_index_map() const { return face_index_; }
 
   // ---------------------------------------------------------------- seeding
   /// Finds every intersection vertex of the triangle `f` and queues it.
@@ -145,10 +147,13 @@ public:
     const Triangle t = load(face_id);
     // Most triangles lie in one lattice cell (equal ceilings at the three corners):
     // no lattice level is crossed, so there is no intersection vertex to look for.
-    if(!(*t.c[0] == *t.c[1] && *t.c[1] == *t.c[2]))
+    if(!(*t.c[0] == *t.c[1] && *t.c[1] == *t.c[2])) {
+      if(untraced_pieces_)
+        untraced_pieces_[face_id] += number_of_crossed_hyperplanes(t);
       scan_crossed_levels(t, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
         find_or_create(face_id, i, j, k, m, o, /*queue*/ true);
       });
+    }
     create_border_crossings_of(face_id);
   }
 
@@ -221,11 +226,14 @@ public:
       for(std::size_t c = range.begin(); c != range.end(); ++c)
         for(std::size_t position = c * chunk; position < (std::min)(n, (c + 1) * chunk); ++position) {
           const Triangle t = load(all_face_ids_[position]); // reads only: all mapped and recorded
-          if(!(*t.c[0] == *t.c[1] && *t.c[1] == *t.c[2]))
-            scan_crossed_levels(t, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
-              found[c].push_back(
-                  {std::uint32_t(position), std::int8_t(i), std::int8_t(j), std::int8_t(o), k, m});
-            });
+          if(*t.c[0] == *t.c[1] && *t.c[1] == *t.c[2])
+            continue;
+          if(untraced_pieces_) // the task's own entry
+            untraced_pieces_[t.face_id] += number_of_crossed_hyperplanes(t);
+          scan_crossed_levels(t, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
+            found[c].push_back(
+                {std::uint32_t(position), std::int8_t(i), std::int8_t(j), std::int8_t(o), k, m});
+          });
         }
     });
     for(std::size_t c = 0; c < chunks; ++c) {
@@ -613,6 +621,8 @@ private:
     if(!inserted)
       return id;
     check_cap();
+    if(untraced_pieces_)
+      untraced_pieces_[face_id] += 2; // the vertex splits the segments of both its hyperplanes
     Vertex v;
     v.face_id = face_id;
     v.i = std::int8_t(i);
@@ -729,8 +739,20 @@ private:
     v.i = v.j = std::int8_t(P);
     v.border_edge = std::int8_t(e);
     v.orientation = 1; // slots 0, 1, 2 counter-clockwise
-    v.cell[P] = level;
-    // the cell in the other axes: floor of the crossing point's coordinates, exactly
+    v.cell = cell_of_crossing(a, b, P, level);
+    v.has_cell = true;
+    vertices_.push_back(v);
+    queue_.push_back(id);
+    ++number_of_boundary_vertices_;
+    return id;
+  }
+
+  /// The lattice cell of the point where segment ab crosses x_P = level, exactly:
+  /// the floor of its coordinates in the other axes, and level in axis P.
+  Levels cell_of_crossing(const Point_d& a, const Point_d& b, int P, std::int32_t level) const
+  {
+    Levels cell;
+    cell[P] = level;
     const double t = Predicates::crossing_parameter(a, b, P, double(level));
     for(int q = 0; q < D; ++q) {
       if(q == P)
@@ -740,13 +762,9 @@ private:
                                                            (std::max)(a[q], b[q]))));
       while(predicates_.crossing_side(a, b, P, double(level), q, double(n)) < 0) --n;
       while(predicates_.crossing_side(a, b, P, double(level), q, double(n + 1)) > 0) ++n;
-      v.cell[q] = n;
+      cell[q] = n;
     }
-    v.has_cell = true;
-    vertices_.push_back(v);
-    queue_.push_back(id);
-    ++number_of_boundary_vertices_;
-    return id;
+    return cell;
   }
 
   /// The boundary vertex next to v along the input border (direction +1: forward).
@@ -903,6 +921,8 @@ private:
       if(step > maximum_steps)
         throw std::logic_error("Range_space_remeshing: endless arc (internal error)");
       ++tracing_steps_;
+      if(untraced_pieces_)
+        --untraced_pieces_[f];
       const Triangle t = load(f);
       const int e = exit_edge(t, P, level, sigma);
       const Point_d& a = *t.p[e];
@@ -1175,10 +1195,127 @@ public:
     return v.has_cell ? barycentric_in_cell(t, v) : barycentric(t, v.i, v.j, double(v.k()), double(v.m()));
   }
 
-  /// The lattice coordinates of a mapped input vertex (for checks).
+  // ---------------------------------------------------------------- topology
+  // What the topology check (Topology_check.h) reads, after a complete scan: every
+  // face is recorded and every vertex it uses is mapped.
+
+  /// Keeps, per input face, the number of pieces of hyperplane segments that no arc
+  /// has passed through: + the hyperplanes crossing the face, + 2 per intersection
+  /// vertex in it (it splits a segment of each of its two hyperplanes), - 1 per arc
+  /// visit. After a complete scan and the tracing, what remains are the pieces of
+  /// closed loops. To be called before the scan; costs an increment per tracing step.
+  void count_untraced_pieces()
+  {
+    untraced_piece_counts_.assign(num_faces(tm_), 0);
+    untraced_pieces_ = untraced_piece_counts_.data();
+  }
+
+  /// Calls `report(P, level, cell, faces)` for each closed loop of the surface in a
+  /// hyperplane x_P = level that meets no grid edge (so no arc traced it): `cell` is
+  /// the lattice cell above the grid face holding it (cell[P] = level), `faces` the
+  /// ids of the input faces it crosses. Needs `count_untraced_pieces()`, a complete
+  /// scan and `trace()`; walks only from the faces with untraced pieces.
+  template <class Report>
+  std::size_t find_closed_loops(const Report& report)
+  {
+    std::size_t loops = 0;
+    std::vector<std::uint32_t> loop;
+    for(std::uint32_t f = 0; f < untraced_piece_counts_.size(); ++f) {
+      if(untraced_piece_counts_[f] < 0)
+        throw std::logic_error("Range_space_remeshing: an arc crossed a face more often than "
+                               "hyperplanes do (internal error)");
+      if(untraced_piece_counts_[f] == 0)
+        continue;
+      const Triangle t = load(f);
+      for(int P = 0; P < D && untraced_piece_counts_[f] > 0; ++P)
+        for(std::int32_t level = lowest_ceiling(t, P); level < highest_ceiling(t, P) &&
+                                                       untraced_piece_counts_[f] > 0; ++level) {
+          if(segment_has_vertex(t, P, level) || !walk_loop(f, P, level, loop))
+            continue;
+          for(std::uint32_t g : loop)
+            --untraced_piece_counts_[g];
+          const int e = exit_edge(t, P, level, 1);
+          report(P, level, cell_of_crossing(*t.p[e], *t.p[(e + 1) % 3], P, level), loop);
+          ++loops;
+        }
+    }
+    return loops;
+  }
+
+  static constexpr std::uint32_t no_neighbour = std::uint32_t(-1);
+  std::size_t number_of_input_faces() const { return face_of_id_.size(); }
+  face_descriptor face_of_id(std::uint32_t face_id) const { return face_of_id_[face_id]; }
+  /// the face's corners (vertex ids, counter-clockwise) and its neighbours across
+  /// the edges corner e -> corner e+1 (`no_neighbour` on the border)
+  const std::array<std::uint32_t, 3>& corners_of(std::uint32_t face_id) const { return records_[face_id].vertex; }
+  const std::array<std::uint32_t, 3>& neighbours_of(std::uint32_t face_id) const { return records_[face_id].neighbour; }
+  /// the first lattice level above each range coordinate of a mapped vertex
+  const Levels& ceiling_of(std::uint32_t vertex_id) const { return mapped_vertices_[vertex_id].ceiling; }
+
+  /// The cell of the point where the input edge between the two mapped vertices
+  /// crosses x_P = level (cell[P] = level): the same whichever face asks, since the
+  /// edge is taken from its lower vertex id.
+  Levels cell_of_edge_crossing(std::uint32_t a, std::uint32_t b, int P, std::int32_t level) const
+  {
+    if(b < a)
+      std::swap(a, b);
+    return cell_of_crossing(mapped_vertices_[a].u, mapped_vertices_[b].u, P, level);
+  }
 
 private:
   using Predicates = Perturbed_predicates<Traits>;
+
+  static std::int32_t lowest_ceiling(const Triangle& t, int P)
+  {
+    return (std::min)({(*t.c[0])[P], (*t.c[1])[P], (*t.c[2])[P]});
+  }
+  static std::int32_t highest_ceiling(const Triangle& t, int P)
+  {
+    return (std::max)({(*t.c[0])[P], (*t.c[1])[P], (*t.c[2])[P]});
+  }
+
+  /// Number of hyperplane segments crossing the triangle (levels strictly crossed).
+  static std::int32_t number_of_crossed_hyperplanes(const Triangle& t)
+  {
+    std::int32_t n = 0;
+    for(int q = 0; q < D; ++q)
+      n += highest_ceiling(t, q) - lowest_ceiling(t, q);
+    return n;
+  }
+
+  /// Whether the segment of x_P = level across the triangle holds an intersection
+  /// vertex, by the exact tests of the scan.
+  bool segment_has_vertex(const Triangle& t, int P, std::int32_t level) const
+  {
+    for(int l = 0; l < D; ++l) {
+      if(l == P)
+        continue;
+      const int i = (std::min)(P, l), j = (std::max)(P, l);
+      for(std::int32_t n = lowest_ceiling(t, l); n < highest_ceiling(t, l); ++n) {
+        const double k = double(i == P ? level : n), m = double(i == P ? n : level);
+        if(predicates_.grid_edge_orientation(*t.p[0], *t.p[1], *t.p[2], i, j, k, m) != 0)
+          return true;
+      }
+    }
+    return false;
+  }
+
+  /// Follows the curve of x_P = level from face f0 as the tracer would; true, with
+  /// the faces in `loop`, when it comes back to f0 without meeting a face where it
+  /// holds a vertex, or the border (then it is a piece of some traced arc).
+  bool walk_loop(std::uint32_t f0, int P, std::int32_t level, std::vector<std::uint32_t>& loop)
+  {
+    loop.assign(1, f0);
+    for(std::uint32_t f = f0; loop.size() <= num_faces(tm_);) {
+      const std::uint32_t n = records_[f].neighbour[exit_edge(load(f), P, level, 1)];
+      if(n == f0)
+        return true;
+      if(n == border || segment_has_vertex(load(n), P, level))
+        return false;
+      loop.push_back(f = n);
+    }
+    throw std::logic_error("Range_space_remeshing: endless level curve (internal error)");
+  }
 
   const TriangleMesh& tm_;
   RangeMap range_map_;
@@ -1210,6 +1347,8 @@ private:
   std::vector<std::uint8_t> walked_border_; // by border_key(), for empty components
   std::size_t border_cycles_of_empty_components_ = 0;
   std::size_t tracing_steps_ = 0;
+  std::vector<std::int32_t> untraced_piece_counts_; // see count_untraced_pieces()
+  std::int32_t* untraced_pieces_ = nullptr;         // its data, or null: not counting
 
   std::vector<Vertex> vertices_;
   std::vector<face_descriptor> face_of_id_;

@@ -78,6 +78,24 @@ public:
 
   static constexpr std::uint32_t none = std::uint32_t(-1);
 
+  /// A face as traced, before any repair: its region of the surface lies, at the
+  /// vertex `halfedge / 4`, between the slots `halfedge % 4` and `next_slot`
+  /// (counter-clockwise). The topology check finds the face's cell from it.
+  struct Traced_face_corner
+  {
+    std::uint32_t halfedge;
+    std::uint32_t next_slot;
+  };
+  /// the traced faces (one per boundary cycle of a region of the surface in a cell),
+  /// before digons are merged and pinched faces split
+  const std::vector<Traced_face_corner>& traced_face_corners() const { return traced_face_corners_; }
+  /// V - E + F of the traced complex, before the repairs (which keep it, but for
+  /// dropped pieces)
+  long traced_euler_characteristic() const { return traced_euler_characteristic_; }
+  /// V - E + F of the output
+  long euler_characteristic() const { return euler_characteristic_; }
+  std::size_t number_of_components() const { return components_; }
+
 private:
   // ---------------------------------------------------------- rotation system
   void build_rotation(const std::vector<std::uint32_t>& links,
@@ -107,6 +125,7 @@ private:
 
   void trace_faces()
   {
+    std::size_t alive_halfedges = 0;
     face_of_.assign(twin_.size(), none);
     for(std::uint32_t h = 0; h < twin_.size(); ++h) {
       if(face_of_[h] != none || !alive_[h])
@@ -120,7 +139,12 @@ private:
         ++degree;
       }
       orbit_degree_.push_back(degree);
+      if(!is_hole_halfedge(h))
+        traced_face_corners_.push_back({h, ccw_next_[h] % 4});
+      alive_halfedges += degree;
     }
+    traced_euler_characteristic_ = long(number_of_vertices_) - long(alive_halfedges / 2) +
+                                   long(traced_face_corners_.size());
   }
 
   void remove_from_rotation(std::uint32_t h)
@@ -296,6 +320,7 @@ private:
     for(std::uint32_t f = 0; f < face_halfedge_.size(); ++f)
       if(!kept_vertex_[halfedges_[face_halfedge_[f]].target])
         face_halfedge_[f] = none;
+    count_output_topology(parent);
     // report only the repairs that are in the output
     digons_ = std::count_if(digon_vertices_.begin(), digon_vertices_.end(),
                             [this](std::uint32_t v) { return bool(kept_vertex_[v]); });
@@ -305,8 +330,29 @@ private:
                                       [this](std::uint32_t v) { return bool(kept_vertex_[v]); });
   }
 
+  void count_output_topology(std::vector<std::uint32_t>& parent)
+  {
+    std::vector<std::uint8_t> counted(number_of_vertices_, 0);
+    for(std::uint32_t v = 0; v < number_of_vertices_; ++v)
+      if(kept_vertex_[v]) {
+        ++euler_characteristic_;
+        const std::uint32_t r = find_root(parent, v);
+        components_ += counted[r] ? 0 : 1;
+        counted[r] = 1;
+      }
+    long kept_halfedges = 0;
+    for(std::uint32_t h = 0; h < halfedges_.size(); ++h)
+      kept_halfedges += kept_vertex_[halfedges_[h].target] ? 1 : 0;
+    euler_characteristic_ -= kept_halfedges / 2;
+    euler_characteristic_ += long(std::count_if(face_halfedge_.begin(), face_halfedge_.end(),
+                                                [](std::uint32_t h) { return h != none; }));
+  }
+
   std::uint32_t number_of_vertices_;
   std::vector<bool> boundary_;
+  std::vector<Traced_face_corner> traced_face_corners_;
+  long traced_euler_characteristic_ = 0, euler_characteristic_ = 0;
+  std::size_t components_ = 0;
   // rotation system
   std::vector<std::uint32_t> twin_, ccw_next_, ccw_prev_;
   std::vector<std::uint8_t> alive_;

@@ -1,0 +1,510 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_TOPOLOGY_CHECK_H
+#define CGAL_RANGE_SPACE_REMESHING_INTERNAL_TOPOLOGY_CHECK_H
+
+// Whether the primal remesh has the topology of its input, decided after a complete
+// scan from the tracer's records and the traced complex.
+//
+// The grid cuts the surface M into vertices, open arcs, closed loops and open
+// regions (the components of M inside the open cells). Counting Euler
+// characteristics with compact support, chi(M) = V - E + sum over regions of
+// chi_c(R) (a loop counts 0), while the traced complex has V - E + F with F the
+// number of traced faces, one per boundary cycle. So
+//     chi(M) - chi(traced) = sum over regions of (chi_c(R) - cycles(R)),
+// and for a region with at least one boundary cycle chi_c(R) - cycles(R) =
+// 2 - 2 genus - ends - cycles <= 0, zero exactly for a disk bounded by one cycle.
+// Regions without a traced cycle are bounded by closed loops or are whole
+// components, and are found directly. Hence the cheap test: no loop, no lost
+// component, no hole inside a cell and chi(M) = chi(traced) mean every region is a
+// disk, and then the output is a cell decomposition of M: the same topology.
+//
+// Only when it fails are the defects located, cell by cell: chi_c of M inside an
+// open cell c is #triangles - #edges + #vertices meeting it (a triangle or an edge
+// meets a convex cell in one convex piece), and the triangles meeting c are found
+// from the points where the cells around a triangle meet it: its corners, both sides
+// of its edges' crossings, the four quadrants of its intersection vertices.
+
+#include <CGAL/Range_space_remeshing/Statistics.h>
+#include <CGAL/Range_space_remeshing/Topology_defect.h>
+#include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+namespace internal {
+
+template <class Levels>
+struct Levels_hash
+{
+  std::size_t operator()(const Levels& c) const
+  {
+    std::uint64_t h = 1469598103934665603ull;
+    for(std::int32_t x : c)
+      h = (h ^ std::uint32_t(x)) * 1099511628211ull;
+    return std::size_t(h ^ (h >> 29));
+  }
+};
+
+template <class Tracer, class FaceDescriptor>
+class Topology_check
+{
+  static constexpr int D = Tracer::D;
+  using Levels = typename Tracer::Levels;
+  using Defect = Topology_defect<FaceDescriptor>;
+  static constexpr std::uint32_t none = std::uint32_t(-1);
+  using Cell_map = std::unordered_map<Levels, long, Levels_hash<Levels>>;
+  struct Loop
+  {
+    int axis;
+    Levels cell; // above the loop in `axis`
+    std::vector<std::uint32_t> faces;
+    bool harmless = false;
+  };
+
+public:
+  Topology_check(Tracer& tracer, const Primal_complex& complex)
+    : tracer_(tracer), complex_(complex), number_of_faces_(std::uint32_t(tracer.number_of_input_faces()))
+  {}
+
+  /// Fills the topology fields of `stats` and returns the defects found.
+  std::vector<Defect> run(Statistics& stats)
+  {
+    stats.topology_checked = true;
+    tracer_.find_closed_loops(
+        [&](int axis, std::int32_t level, const Levels& cell, const std::vector<std::uint32_t>& faces) {
+          loops_.push_back(Loop{axis, cell, faces});
+          loops_.back().cell[axis] = level;
+        });
+    const long chi_of_kept_components = find_components(stats);
+    find_lost_border_cycles();
+    stats.input_euler_characteristic = input_euler_characteristic_;
+    stats.output_euler_characteristic = complex_.euler_characteristic();
+    stats.output_components = complex_.number_of_components();
+    const bool chi_matches = chi_of_kept_components == complex_.traced_euler_characteristic();
+    if(defects_.empty() && chi_matches && !loops_.empty()) {
+      // Loops only: if they all just cut caps off, counting their cells is enough
+      // (the other cells then have excess 0, the total being 0): no full count.
+      Cell_map excess = count_in_cells_of_loops();
+      stats.harmless_loops = absorb_caps(excess);
+      if(stats.harmless_loops == loops_.size())
+        return std::move(defects_);
+      stats.harmless_loops = 0;
+      for(Loop& loop : loops_)
+        loop.harmless = false;
+    }
+    if(!defects_.empty() || !loops_.empty() || !chi_matches) {
+      Cell_map excess = count_per_cell();
+      stats.harmless_loops = absorb_caps(excess);
+      for(const Loop& loop : loops_)
+        if(!loop.harmless) {
+          add_defect(Topology_defect_kind::CLOSED_LOOP, loop.cell, loop.faces).axis = loop.axis;
+          ++stats.closed_loops;
+        }
+      stats.non_disk_cells = locate_non_disk_cells(excess);
+    }
+    return std::move(defects_);
+  }
+
+private:
+  template <class Faces>
+  Defect& add_defect(Topology_defect_kind kind, const Levels& cell, const Faces& face_ids)
+  {
+    defects_.emplace_back();
+    Defect& d = defects_.back();
+    d.kind = kind;
+    d.cell.assign(cell.begin(), cell.end());
+    for(std::uint32_t f : face_ids)
+      d.input_faces.push_back(tracer_.face_of_id(f));
+    return d;
+  }
+
+  Levels cell_of_vertex(std::uint32_t v) const
+  {
+    Levels c = tracer_.ceiling_of(v);
+    for(std::int32_t& x : c)
+      --x; // a coordinate on a level counts as below it
+    return c;
+  }
+
+  // ---------------------------------------------------------- components
+  /// Labels the input components, finds those without output, and returns the
+  /// Euler characteristic of the others (the input's is stored).
+  long find_components(Statistics& stats)
+  {
+    component_.assign(number_of_faces_, none);
+    std::vector<std::uint8_t> has_output(number_of_faces_, 0);
+    for(const auto& v : tracer_.intersection_vertices())
+      has_output[v.face_id] = 1;
+    std::vector<std::uint32_t> vertex_seen; // by vertex id: 1 + component
+    std::vector<std::uint32_t> stack, faces;
+    long chi_kept = 0;
+    for(std::uint32_t seed = 0; seed < number_of_faces_; ++seed) {
+      if(component_[seed] != none)
+        continue;
+      const std::uint32_t c = std::uint32_t(stats.input_components++);
+      long vertices = 0, half_edges = 0, border_edges = 0;
+      bool output = false;
+      faces.clear();
+      component_[seed] = c;
+      stack.assign(1, seed);
+      while(!stack.empty()) {
+        const std::uint32_t f = stack.back();
+        stack.pop_back();
+        faces.push_back(f);
+        output = output || has_output[f];
+        half_edges += 3;
+        for(int e = 0; e < 3; ++e) {
+          const std::uint32_t v = tracer_.corners_of(f)[e];
+          if(v >= vertex_seen.size())
+            vertex_seen.resize(std::size_t(v) + 1 + vertex_seen.size() / 2, 0);
+          if(vertex_seen[v] != c + 1) {
+            vertex_seen[v] = c + 1;
+            ++vertices;
+          }
+          const std::uint32_t n = tracer_.neighbours_of(f)[e];
+          if(n == Tracer::no_neighbour)
+            ++border_edges;
+          else if(component_[n] == none) {
+            component_[n] = c;
+            stack.push_back(n);
+          }
+        }
+      }
+      const long chi = vertices - (half_edges + border_edges) / 2 + long(faces.size());
+      input_euler_characteristic_ += chi;
+      if(output) {
+        chi_kept += chi;
+        continue;
+      }
+      lost_component_.resize(c + 1, 0);
+      lost_component_[c] = 1;
+      ++stats.lost_components;
+      add_defect(Topology_defect_kind::LOST_COMPONENT, cell_of_vertex(tracer_.corners_of(seed)[0]), faces);
+    }
+    return chi_kept;
+  }
+
+  bool is_lost(std::uint32_t f) const
+  {
+    return component_[f] < lost_component_.size() && lost_component_[component_[f]];
+  }
+
+  // ---------------------------------------------------------- border cycles
+  /// Border cycles whose vertices all lie in one cell (no hyperplane crosses them),
+  /// in components that have an output.
+  void find_lost_border_cycles()
+  {
+    std::vector<std::uint8_t> walked(3 * std::size_t(number_of_faces_), 0);
+    std::vector<std::uint32_t> faces;
+    for(std::uint32_t f = 0; f < number_of_faces_; ++f)
+      for(int e = 0; e < 3; ++e) {
+        if(tracer_.neighbours_of(f)[e] != Tracer::no_neighbour || walked[3 * f + e] || is_lost(f))
+          continue;
+        const Levels& ceiling = tracer_.ceiling_of(tracer_.corners_of(f)[e]);
+        bool one_cell = true;
+        faces.clear();
+        std::uint32_t g = f;
+        int edge = e;
+        do {
+          walked[3 * g + edge] = 1;
+          faces.push_back(g);
+          one_cell = one_cell && tracer_.ceiling_of(tracer_.corners_of(g)[edge]) == ceiling;
+          next_border_edge(g, edge);
+        } while(g != f || edge != e);
+        if(one_cell)
+          add_defect(Topology_defect_kind::LOST_BORDER_CYCLE, cell_of_vertex(tracer_.corners_of(f)[e]), faces);
+      }
+  }
+
+  /// The border edge that follows edge `e` of face `f` along the border, turning
+  /// around the vertex that ends it.
+  void next_border_edge(std::uint32_t& f, int& e) const
+  {
+    const std::uint32_t pivot = tracer_.corners_of(f)[(e + 1) % 3];
+    for(std::uint32_t steps = 0; steps <= number_of_faces_; ++steps) {
+      e = (e + 1) % 3; // the face's edge leaving the pivot
+      const std::uint32_t n = tracer_.neighbours_of(f)[e];
+      if(n == Tracer::no_neighbour)
+        return;
+      f = n;
+      const auto& corners = tracer_.corners_of(f);
+      e = int(std::find(corners.begin(), corners.end(), pivot) - corners.begin());
+      e = (e + 2) % 3; // the edge entering the pivot, shared with the previous face
+    }
+    throw std::logic_error("Range_space_remeshing: endless border (internal error)");
+  }
+
+  // ---------------------------------------------------------- cells
+
+  static void add_once(std::vector<Levels>& cells, const Levels& c)
+  {
+    if(std::find(cells.begin(), cells.end(), c) == cells.end())
+      cells.push_back(c);
+  }
+
+  /// The cells the open edge from vertex a to vertex b meets, but for its ends'.
+  void add_crossing_cells(std::uint32_t a, std::uint32_t b, std::vector<Levels>& cells) const
+  {
+    const Levels &ca = tracer_.ceiling_of(a), &cb = tracer_.ceiling_of(b);
+    for(int P = 0; P < D; ++P)
+      for(std::int32_t level = (std::min)(ca[P], cb[P]); level < (std::max)(ca[P], cb[P]); ++level) {
+        Levels c = tracer_.cell_of_edge_crossing(a, b, P, level);
+        add_once(cells, c);
+        --c[P];
+        add_once(cells, c);
+      }
+  }
+
+  void cells_of_face(std::uint32_t f, std::vector<Levels>& cells) const
+  {
+    cells.clear();
+    const auto& corners = tracer_.corners_of(f);
+    for(int e = 0; e < 3; ++e)
+      add_once(cells, cell_of_vertex(corners[e]));
+    for(int e = 0; e < 3; ++e)
+      add_crossing_cells(corners[e], corners[(e + 1) % 3], cells);
+    const auto& vertices = tracer_.intersection_vertices();
+    for(std::uint32_t x = vertex_start_[f]; x < vertex_start_[f + 1]; ++x) {
+      const auto& v = vertices[vertices_by_face_[x]];
+      for(int quadrant = 0; quadrant < 4; ++quadrant) {
+        Levels c = v.cell;
+        c[v.i] -= quadrant & 1;
+        c[v.j] -= quadrant >> 1;
+        add_once(cells, c);
+      }
+    }
+  }
+
+  /// The cell of a traced face, from the sector it fills at one of its vertices.
+  Levels cell_of_traced_face(const Primal_complex::Traced_face_corner& corner) const
+  {
+    const auto& v = tracer_.intersection_vertices()[corner.halfedge / 4];
+    const std::uint32_t s = corner.halfedge % 4, t = corner.next_slot;
+    Levels c = v.cell;
+    if(v.is_corner())
+      return c;
+    if(v.is_boundary()) {
+      // between the forward boundary edge and the arc (slots 0 -> 1): on the side of
+      // the end of the border edge; between the arc and the backward edge: the other
+      const std::uint32_t end = tracer_.corners_of(v.face_id)[(v.border_edge + 1) % 3];
+      const bool end_above = tracer_.ceiling_of(end)[v.i] > v.k();
+      c[v.i] = v.k() - ((s == 0) == end_above ? 0 : 1);
+      return c;
+    }
+    const std::uint32_t along_i = (s % 2 == 0) ? s : t, along_j = (s % 2 == 0) ? t : s;
+    c[v.i] = v.k() - (along_i == 0 ? 0 : 1); // slot 0 is +i, 2 is -i
+    c[v.j] = v.m() - (along_j == 1 ? 0 : 1); // slot 1 is +j, 3 is -j
+    return c;
+  }
+
+  void index_vertices_by_face()
+  {
+    const auto& vertices = tracer_.intersection_vertices();
+    vertex_start_.assign(std::size_t(number_of_faces_) + 1, 0);
+    for(const auto& v : vertices)
+      if(!v.is_boundary())
+        ++vertex_start_[v.face_id + 1];
+    for(std::uint32_t f = 0; f < number_of_faces_; ++f)
+      vertex_start_[f + 1] += vertex_start_[f];
+    vertices_by_face_.resize(vertex_start_.back());
+    std::vector<std::uint32_t> next(vertex_start_.begin(), vertex_start_.end() - 1);
+    for(std::uint32_t x = 0; x < vertices.size(); ++x)
+      if(!vertices[x].is_boundary())
+        vertices_by_face_[next[vertices[x].face_id]++] = x;
+  }
+
+  /// chi_c(M inside c) - (traced faces in c) for every cell: zero where the surface
+  /// is a set of disks each bounded by one traced cycle.
+  Cell_map count_per_cell()
+  {
+    index_vertices_by_face();
+    Cell_map excess;
+    std::vector<Levels> cells;
+    std::vector<std::uint8_t> vertex_counted;
+    for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
+      if(is_lost(f))
+        continue;
+      cells_of_face(f, cells);
+      for(const Levels& c : cells)
+        ++excess[c];
+      const auto& corners = tracer_.corners_of(f);
+      for(int e = 0; e < 3; ++e) {
+        const std::uint32_t n = tracer_.neighbours_of(f)[e];
+        if(n != Tracer::no_neighbour && n < f)
+          continue; // each edge once
+        cells.clear();
+        add_once(cells, cell_of_vertex(corners[e]));
+        add_once(cells, cell_of_vertex(corners[(e + 1) % 3]));
+        add_crossing_cells(corners[e], corners[(e + 1) % 3], cells);
+        for(const Levels& c : cells)
+          --excess[c];
+      }
+      for(int e = 0; e < 3; ++e) {
+        if(corners[e] >= vertex_counted.size())
+          vertex_counted.resize(std::size_t(corners[e]) + 1 + vertex_counted.size() / 2, 0);
+        if(!vertex_counted[corners[e]]) {
+          vertex_counted[corners[e]] = 1;
+          ++excess[cell_of_vertex(corners[e])];
+        }
+      }
+    }
+    for(const auto& corner : complex_.traced_face_corners())
+      --excess[cell_of_traced_face(corner)];
+    return excess;
+  }
+
+  /// The excesses of the two cells of every loop, from the input faces meeting them
+  /// only: those reached from the loops' faces and the traced faces' vertices in
+  /// them, across edges meeting the cell (a region is connected through them).
+  Cell_map count_in_cells_of_loops()
+  {
+    index_vertices_by_face();
+    std::unordered_map<Levels, std::vector<std::uint32_t>, Levels_hash<Levels>> seeds;
+    for(const Loop& loop : loops_) {
+      auto& above = seeds[loop.cell];
+      auto& below = seeds[cell_below(loop)];
+      above.insert(above.end(), loop.faces.begin(), loop.faces.end());
+      below.insert(below.end(), loop.faces.begin(), loop.faces.end());
+    }
+    Cell_map excess;
+    const auto& vertices = tracer_.intersection_vertices();
+    for(const auto& corner : complex_.traced_face_corners()) {
+      const auto found = seeds.find(cell_of_traced_face(corner));
+      if(found != seeds.end()) {
+        found->second.push_back(vertices[corner.halfedge / 4].face_id);
+        --excess[found->first];
+      }
+    }
+    std::vector<std::uint8_t> in_region(number_of_faces_, 0);
+    std::vector<Levels> cells;
+    for(auto& entry : seeds) {
+      const Levels& c = entry.first;
+      std::vector<std::uint32_t> region, stack;
+      std::vector<std::uint32_t> counted_vertices;
+      auto meets = [&](std::uint32_t f) {
+        cells_of_face(f, cells);
+        return std::find(cells.begin(), cells.end(), c) != cells.end();
+      };
+      for(std::uint32_t f : entry.second)
+        if(!in_region[f] && meets(f)) {
+          in_region[f] = 1;
+          stack.push_back(f);
+        }
+      while(!stack.empty()) {
+        const std::uint32_t f = stack.back();
+        stack.pop_back();
+        region.push_back(f);
+        ++excess[c];
+        const auto& corners = tracer_.corners_of(f);
+        for(int e = 0; e < 3; ++e) {
+          cells.clear();
+          add_once(cells, cell_of_vertex(corners[e]));
+          add_once(cells, cell_of_vertex(corners[(e + 1) % 3]));
+          add_crossing_cells(corners[e], corners[(e + 1) % 3], cells);
+          if(std::find(cells.begin(), cells.end(), c) == cells.end())
+            continue;
+          const std::uint32_t n = tracer_.neighbours_of(f)[e];
+          if(n == Tracer::no_neighbour || n > f) // each edge once (both its faces meet c)
+            --excess[c];
+          if(n != Tracer::no_neighbour && !in_region[n]) {
+            in_region[n] = 1;
+            stack.push_back(n);
+          }
+        }
+        for(int e = 0; e < 3; ++e)
+          if(cell_of_vertex(corners[e]) == c &&
+             std::find(counted_vertices.begin(), counted_vertices.end(), corners[e]) == counted_vertices.end()) {
+            counted_vertices.push_back(corners[e]);
+            ++excess[c];
+          }
+      }
+      for(std::uint32_t f : region)
+        in_region[f] = 0;
+    }
+    return excess;
+  }
+
+  /// A closed loop whose two cells hold no other loop and have excesses +1 and -1
+  /// only cuts a cap off: the +1 is a disk bounded by the loop alone (any other
+  /// region bounded by it, or one with a traced cycle too, has an excess below 1,
+  /// and the other regions of the cell at most 0), and gluing it across the loop
+  /// makes the other cell's regions disks (their excesses, at most 0 each, then sum
+  /// to 0). The output, which covers the loop by the face of the other cell, then
+  /// has the input's topology. Marks those loops harmless, and their cells zero.
+  std::size_t absorb_caps(Cell_map& excess)
+  {
+    std::unordered_map<Levels, int, Levels_hash<Levels>> loops_per_cell;
+    for(const Loop& loop : loops_) {
+      ++loops_per_cell[loop.cell];
+      ++loops_per_cell[cell_below(loop)];
+    }
+    std::size_t harmless = 0;
+    for(Loop& loop : loops_) {
+      long& above = excess[loop.cell];
+      long& below = excess[cell_below(loop)];
+      if(loops_per_cell[loop.cell] == 1 && loops_per_cell[cell_below(loop)] == 1 && above + below == 0 &&
+         (above == 1 || below == 1)) {
+        above = below = 0;
+        loop.harmless = true;
+        ++harmless;
+      }
+    }
+    return harmless;
+  }
+
+  static Levels cell_below(const Loop& loop)
+  {
+    Levels c = loop.cell;
+    --c[loop.axis];
+    return c;
+  }
+
+  /// Reports the cells of nonzero excess, with the faces meeting them; their number.
+  std::size_t locate_non_disk_cells(const Cell_map& excess)
+  {
+    std::unordered_map<Levels, std::size_t, Levels_hash<Levels>> defect_of_cell;
+    for(const auto& entry : excess)
+      if(entry.second != 0) {
+        defect_of_cell.emplace(entry.first, defects_.size());
+        add_defect(Topology_defect_kind::NON_DISK_CELL, entry.first, std::vector<std::uint32_t>());
+      }
+    if(defect_of_cell.empty())
+      return 0;
+    std::vector<Levels> cells;
+    for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
+      if(is_lost(f))
+        continue;
+      cells_of_face(f, cells);
+      for(const Levels& c : cells) {
+        const auto found = defect_of_cell.find(c);
+        if(found != defect_of_cell.end())
+          defects_[found->second].input_faces.push_back(tracer_.face_of_id(f));
+      }
+    }
+    return defect_of_cell.size();
+  }
+
+  Tracer& tracer_;
+  const Primal_complex& complex_;
+  std::uint32_t number_of_faces_;
+  std::vector<std::uint32_t> component_;     // by face id
+  std::vector<std::uint8_t> lost_component_; // by component
+  long input_euler_characteristic_ = 0;
+  std::vector<std::uint32_t> vertex_start_, vertices_by_face_; // intersection vertices by face
+  std::vector<Loop> loops_;
+  std::vector<Defect> defects_;
+};
+
+} // namespace internal
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_INTERNAL_TOPOLOGY_CHECK_H

@@ -1,0 +1,294 @@
+// Topology beyond the paper: the check (closed loops, non-disk cells, lost
+// components and border cycles) and `preserve_topology`, on meshes generated in
+// code (barbell, torus with a thin handle, sphere with a shallow cap under a grid
+// plane) and on CGAL's refined_elephant and bunny00.
+// Usage: test_topology [directory of CGAL's sample meshes]
+#include "test_support.h"
+
+#include <CGAL/Range_space_remeshing/Topology_defect.h>
+#include <CGAL/Range_space_remeshing/remesh.h>
+
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <algorithm>
+#include <map>
+
+using namespace test;
+namespace params = CGAL::parameters;
+using Defect = RSR::Topology_defect<Mesh::Face_index>;
+using Kind = RSR::Topology_defect_kind;
+
+// ------------------------------------------------------------------ meshes
+
+/// Surface of revolution about the z axis of the profile (r_k, z_k), from a pole
+/// (r = 0) to a pole, with `n` vertices per ring, oriented outwards.
+Mesh make_revolution(const std::vector<std::array<double, 2>>& profile, int n)
+{
+  Mesh m;
+  const auto north = m.add_vertex(Point(0, 0, profile.front()[1]));
+  std::vector<std::vector<Mesh::Vertex_index>> rings;
+  for(std::size_t k = 1; k + 1 < profile.size(); ++k) {
+    rings.emplace_back();
+    for(int i = 0; i < n; ++i) {
+      const double a = 2 * M_PI * i / n;
+      rings.back().push_back(m.add_vertex(Point(profile[k][0] * std::cos(a), profile[k][0] * std::sin(a), profile[k][1])));
+    }
+  }
+  const auto south = m.add_vertex(Point(0, 0, profile.back()[1]));
+  for(int i = 0; i < n; ++i) {
+    const int j = (i + 1) % n;
+    m.add_face(north, rings.front()[i], rings.front()[j]);
+    for(std::size_t k = 0; k + 1 < rings.size(); ++k) {
+      m.add_face(rings[k][i], rings[k + 1][i], rings[k + 1][j]);
+      m.add_face(rings[k][i], rings[k + 1][j], rings[k][j]);
+    }
+    m.add_face(rings.back()[j], rings.back()[i], south);
+  }
+  return m;
+}
+
+/// Two unit spheres centred at z = -/+ c, joined by a cylinder of radius `neck`.
+Mesh make_barbell(double c, double neck)
+{
+  std::vector<std::array<double, 2>> profile;
+  const double joint = std::asin(neck); // polar angle where a sphere meets the neck
+  const int cap_steps = 60, neck_steps = 40;
+  for(int s = 0; s <= cap_steps; ++s) { // upper sphere, from its north pole
+    const double phi = (M_PI - joint) * s / cap_steps;
+    profile.push_back({std::sin(phi), c + std::cos(phi)});
+  }
+  const double top = c - std::cos(joint);
+  for(int s = 1; s < neck_steps; ++s)
+    profile.push_back({neck, top - 2 * top * s / neck_steps});
+  for(int s = cap_steps; s >= 0; --s) { // lower sphere, to its south pole
+    const double phi = (M_PI - joint) * s / cap_steps;
+    profile.push_back({std::sin(phi), -c - std::cos(phi)});
+  }
+  return make_revolution(profile, 64);
+}
+
+/// Torus of radii R > r whose tube thins to r * thin around the angle 0.
+Mesh make_thin_handled_torus(double R, double r, double thin, int nu, int nv)
+{
+  return make_torus_with_tube(
+      R, [=](double u) { return r * (1 - (1 - thin) * std::pow(std::max(0., std::cos(u)), 16)); }, nu, nv);
+}
+
+/// A sphere of radius 3 whose lowest vertex is at (0.5, 0.5, -0.01): with cell size 1,
+/// the plane z = 0 cuts off a cap whose rim, a small closed curve, meets no grid edge.
+Mesh make_sphere_with_shallow_cap()
+{
+  Mesh m = make_sphere(3, 4);
+  Mesh::Vertex_index lowest = *vertices(m).begin();
+  for(auto v : vertices(m))
+    if(m.point(v).z() < m.point(lowest).z())
+      lowest = v;
+  const K::Vector_3 shift = Point(0.5, 0.5, -0.01) - m.point(lowest);
+  for(auto v : vertices(m))
+    m.point(v) = m.point(v) + shift;
+  return m;
+}
+
+// ------------------------------------------------------------------ runs
+
+struct Checked_run
+{
+  RSR::Statistics stats;
+  std::vector<Defect> defects;
+  Mesh output;
+
+  std::size_t count(Kind kind) const
+  {
+    return std::size_t(std::count_if(defects.begin(), defects.end(), [&](const Defect& d) { return d.kind == kind; }));
+  }
+};
+
+/// The primal remesh with the topology check (or preservation), the invariants of
+/// remesh_and_check(), and what the check says checked against the output itself.
+Checked_run run_checked(const Mesh& input, double cell_size, bool preserve = false)
+{
+  Checked_run run;
+  auto collect = [&](const Defect& d) { run.defects.push_back(d); };
+  const auto np = RSR::parameters::check_topology(
+      true, RSR::parameters::preserve_topology(preserve, RSR::parameters::topology_visitor(collect).grid_spacing(cell_size)));
+  run.stats = remesh_and_check(input, run.output, np);
+  CHECK(run.stats.topology_checked);
+  CHECK_EQ(run.stats.output_euler_characteristic, euler_characteristic(run.output));
+  CHECK_EQ(run.stats.output_components, number_of_components(run.output));
+  CHECK_EQ(run.stats.input_euler_characteristic, euler_characteristic(input));
+  CHECK_EQ(run.stats.input_components, number_of_components(const_cast<Mesh&>(input)));
+  CHECK_EQ(run.stats.closed_loops, run.count(Kind::CLOSED_LOOP));
+  CHECK_EQ(run.stats.non_disk_cells, run.count(Kind::NON_DISK_CELL));
+  CHECK_EQ(run.stats.lost_components, run.count(Kind::LOST_COMPONENT));
+  CHECK_EQ(run.stats.uncrossed_border_cycles, run.count(Kind::LOST_BORDER_CYCLE));
+  for(const Defect& d : run.defects) {
+    CHECK(!d.input_faces.empty());
+    CHECK_EQ(d.cell.size(), std::size_t(3));
+  }
+  // The check's promise: when it finds nothing, the output has the input's topology.
+  if(run.stats.topology_preserved()) {
+    CHECK_EQ(euler_characteristic(run.output), euler_characteristic(input));
+    CHECK_EQ(number_of_components(run.output), number_of_components(const_cast<Mesh&>(input)));
+  }
+  return run;
+}
+
+void print(const char* name, double cell_size, const RSR::Statistics& s)
+{
+  std::cout << name << " h = " << cell_size << ": loops " << s.closed_loops << ", non-disk cells "
+            << s.non_disk_cells << ", lost components " << s.lost_components << ", lost border cycles "
+            << s.uncrossed_border_cycles << ", chi " << s.input_euler_characteristic << " -> "
+            << s.output_euler_characteristic << ", components " << s.input_components << " -> "
+            << s.output_components << " (cell size used " << s.cell_size << ", " << s.topology_refinements
+            << " refinements, check " << s.time_topology_ms << " ms of " << s.time_total_ms << " ms)\n";
+}
+
+/// At a coarse cell size the check flags the mesh, with preservation on the output
+/// has its topology; at a fine cell size the check flags nothing.
+void test_flagged_then_preserved(const char* name, const Mesh& mesh, double coarse, double fine)
+{
+  const Checked_run flagged = run_checked(mesh, coarse);
+  print(name, coarse, flagged.stats);
+  CHECK(!flagged.stats.topology_preserved());
+  CHECK(flagged.stats.non_disk_cells + flagged.stats.closed_loops > 0);
+
+  const Checked_run preserved = run_checked(mesh, coarse, /*preserve*/ true);
+  print(name, coarse, preserved.stats);
+  CHECK(preserved.stats.topology_preserved());
+  CHECK(preserved.defects.empty());
+  CHECK(preserved.stats.topology_refinements > 0);
+  CHECK(preserved.stats.cell_size < coarse);
+  CHECK_EQ(euler_characteristic(preserved.output), euler_characteristic(mesh));
+
+  const Checked_run clean = run_checked(mesh, fine);
+  print(name, fine, clean.stats);
+  CHECK(clean.stats.topology_preserved());
+  CHECK(clean.defects.empty());
+}
+
+void test_barbell()
+{
+  Mesh barbell = make_barbell(1.6, 0.08);
+  for(auto v : vertices(barbell)) // the neck inside a column of cells, not along a grid edge
+    barbell.point(v) = barbell.point(v) + K::Vector_3(0.23, 0.27, 0.11);
+  CHECK_EQ(euler_characteristic(barbell), 2);
+  test_flagged_then_preserved("barbell", barbell, 0.5, 0.03);
+}
+
+void test_thin_handled_torus()
+{
+  Mesh torus = make_thin_handled_torus(1, 0.3, 0.1, 256, 32);
+  for(auto v : vertices(torus)) // the thin part inside cells, not along grid planes
+    torus.point(v) = torus.point(v) + K::Vector_3(0.125, 0.047, 0.075);
+  CHECK_EQ(euler_characteristic(torus), 0);
+  test_flagged_then_preserved("thin-handled torus", torus, 0.15, 0.012);
+}
+
+/// A shallow cap under the plane z = 0: one closed loop that only cuts a cap off
+/// (the output keeps the topology), found and classified as harmless.
+void test_shallow_cap()
+{
+  const Mesh sphere = make_sphere_with_shallow_cap();
+  const Checked_run run = run_checked(sphere, 1.0);
+  print("sphere with shallow cap", 1.0, run.stats);
+  CHECK_EQ(run.stats.harmless_loops, std::size_t(1));
+  CHECK(run.stats.topology_preserved());
+}
+
+/// A small sphere inside one cell gives nothing: a lost component. A hole inside
+/// one cell is covered: a lost border cycle, and its cell is not a disk.
+void test_lost_pieces()
+{
+  Mesh spheres = make_sphere(3, 3, Point(0.3, 0.2, 0.1));
+  CGAL::copy_face_graph(make_sphere(0.2, 2, Point(10.5, 0.5, 0.5)), spheres);
+  CGAL::copy_face_graph(make_sphere(0.2, 2, Point(20.5, 0.5, 0.1)), spheres); // across z = 0
+  const Checked_run lost = run_checked(spheres, 1.0);
+  print("three spheres", 1.0, lost.stats);
+  CHECK_EQ(lost.stats.lost_components, std::size_t(2));
+  CHECK_EQ(lost.stats.input_components, std::size_t(3));
+  CHECK_EQ(lost.stats.closed_loops, std::size_t(1));
+  CHECK_EQ(lost.stats.non_disk_cells, std::size_t(0));
+  for(const Defect& d : lost.defects) {
+    if(d.kind == Kind::LOST_COMPONENT) {
+      CHECK((d.cell == std::vector<std::int32_t>{10, 0, 0} || d.cell == std::vector<std::int32_t>{20, 0, 0} ||
+             d.cell == std::vector<std::int32_t>{20, 0, -1}));
+      CHECK_EQ(d.input_faces.size(), std::size_t(320));
+    }
+    if(d.kind == Kind::CLOSED_LOOP) {
+      CHECK_EQ(d.axis, 2);
+      CHECK((d.cell == std::vector<std::int32_t>{20, 0, 0}));
+      for(auto f : d.input_faces) { // the faces of the loop cross z = 0
+        double lowest = 1, highest = -1;
+        for(auto v : CGAL::vertices_around_face(halfedge(f, spheres), spheres)) {
+          lowest = std::min(lowest, spheres.point(v).z());
+          highest = std::max(highest, spheres.point(v).z());
+        }
+        CHECK(lowest <= 0 && highest > 0);
+      }
+    }
+  }
+
+  Mesh holed = make_sphere(3, 3, Point(0.3, 0.2, 0.1));
+  for(auto f : faces(holed)) { // remove a face inside one cell
+    std::set<std::array<int, 3>> cells;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, holed), holed)) {
+      const Point p = holed.point(v);
+      cells.insert({int(std::ceil(p.x())), int(std::ceil(p.y())), int(std::ceil(p.z()))});
+    }
+    if(cells.size() == 1) {
+      CGAL::Euler::remove_face(halfedge(f, holed), holed);
+      break;
+    }
+  }
+  holed.collect_garbage();
+  const Checked_run covered = run_checked(holed, 1.0);
+  print("sphere with a hole inside a cell", 1.0, covered.stats);
+  CHECK_EQ(covered.stats.uncrossed_border_cycles, std::size_t(1));
+  CHECK_EQ(covered.stats.non_disk_cells, std::size_t(1));
+  CHECK(!covered.stats.topology_preserved());
+}
+
+/// No false alarm where the cell size resolves the surface.
+void test_no_false_alarm(const std::string& mesh_dir)
+{
+  for(double h : {0.1, 0.07, 0.043}) {
+    const Checked_run sphere = run_checked(make_sphere(1, 4), h);
+    print("sphere", h, sphere.stats);
+    CHECK(sphere.stats.topology_preserved());
+    const Checked_run torus = run_checked(make_torus(1, 0.4, 96, 48), h);
+    print("torus", h, torus.stats);
+    CHECK(torus.stats.topology_preserved());
+  }
+  Mesh bunny;
+  if(mesh_dir.empty() || !CGAL::IO::read_polygon_mesh(mesh_dir + "/bunny00.off", bunny))
+    return;
+  const double diagonal = bbox_diagonal(bunny);
+  for(double h : {0.01, 0.02}) {
+    const Checked_run run = run_checked(bunny, h * diagonal);
+    print("bunny00", h, run.stats);
+    CHECK(run.stats.topology_preserved());
+  }
+}
+
+void test_refined_elephant(const std::string& mesh_dir)
+{
+  Mesh elephant;
+  if(mesh_dir.empty() || !CGAL::IO::read_polygon_mesh(mesh_dir + "/refined_elephant.off", elephant)) {
+    CHECK(mesh_dir.empty());
+    return;
+  }
+  const double diagonal = bbox_diagonal(elephant);
+  test_flagged_then_preserved("refined_elephant", elephant, 0.08 * diagonal, 0.004 * diagonal);
+}
+
+int main(int argc, char** argv)
+{
+  const std::string mesh_dir = argc > 1 ? argv[1] : "";
+  test_shallow_cap();
+  test_lost_pieces();
+  test_barbell();
+  test_thin_handled_torus();
+  test_no_false_alarm(mesh_dir);
+  test_refined_elephant(mesh_dir);
+  return report("test_topology");
+}
