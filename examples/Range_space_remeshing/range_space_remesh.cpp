@@ -33,6 +33,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -101,6 +102,14 @@ const char* usage =
     "  --relax K             K relaxation iterations of the dual (default 3, 0: none)\n"
     "  --seeded              seeded traversal from one face per component: maps only\n"
     "                        the triangles the arcs cross (sublinear), may miss pieces\n"
+    "  --preserve-topology   reduce the cell size until the output has the input's\n"
+    "                          topology (closed loops, non-disk cells, lost pieces:\n"
+    "                          see the manual); the cell size used is in --stats\n"
+    "  --no-topology-check   skip the topology check (on by default but with\n"
+    "                          --seeded, which cannot check it); a warning is printed\n"
+    "                          on stderr when the check finds a defect\n"
+    "  --topology-report FILE  write the input faces where the topology check found\n"
+    "                          defects to FILE, a mesh (.off .obj .ply .stl)\n"
     "  --stats               print one JSON object with counts and times on stdout\n"
     "  --help                print this help and exit\n"
     "\n"
@@ -138,6 +147,9 @@ struct Options
   double depth_weight = 0; // view map: pixels per unit of depth, from the camera file
   int relax = 3;
   bool absolute = false, seeded = false, stats = false, collapse = true;
+  bool check_topology = true, preserve_topology = false;
+  std::string topology_report; // file of the flagged input faces
+  std::vector<RSR::Topology_defect<Mesh::Face_index>>* defects = nullptr; // filled by the check
   long target_vertices = 0;
 };
 
@@ -214,6 +226,12 @@ Options parse_arguments(int argc, char** argv)
       options.collapse = arg == "--collapse";
     } else if(arg == "--seeded") {
       options.seeded = true;
+    } else if(arg == "--preserve-topology") {
+      options.preserve_topology = true;
+    } else if(arg == "--no-topology-check") {
+      options.check_topology = false;
+    } else if(arg == "--topology-report") {
+      options.topology_report = value();
     } else if(arg == "--stats") {
       options.stats = true;
     } else if(!arg.empty() && arg[0] == '-' && arg != "-") {
@@ -499,6 +517,13 @@ RSR::Remesh_statistics run_with_colors(const Mesh& input, const NamedParameters&
   return run(input, np, options, output);
 }
 
+/// The topology visitor of the program: keeps the defects.
+struct Defect_collector
+{
+  std::vector<RSR::Topology_defect<Mesh::Face_index>>* defects;
+  void operator()(const RSR::Topology_defect<Mesh::Face_index>& defect) const { defects->push_back(defect); }
+};
+
 /// Remeshes with the map of the options. In relative mode (length_unit = the bounding
 /// box diagonal) the weights are scaled so that a cell of size H bounds positions by
 /// H diagonals and normals by H / W (Gauss map: H, in units of the unit cube).
@@ -507,8 +532,16 @@ RSR::Remesh_statistics remesh(const Mesh& input, double h, const Options& option
   output.clear();
   const auto seeding =
       options.seeded ? RSR::Seeding_method::SEEDED : RSR::Seeding_method::COMPLETE_SCAN;
-  const auto np = CGAL::parameters::grid_spacing(h).seeding_method(seeding).number_of_relaxation_steps(
-      options.relax);
+  if(options.seeded && options.preserve_topology)
+    fail("--preserve-topology needs the complete scan: drop --seeded");
+  options.defects->clear();
+  const auto np = RSR::parameters::check_topology(
+      options.check_topology && !options.seeded,
+      RSR::parameters::preserve_topology(
+          options.preserve_topology,
+          RSR::parameters::topology_visitor(Defect_collector{options.defects},
+                                            CGAL::parameters::grid_spacing(h).seeding_method(seeding).number_of_relaxation_steps(
+                                                options.relax))));
   if(options.map == "gauss")
     return run_with_colors(
         input, RSR::parameters::range_map(RSR::make_gauss_range_map(input, options.length_unit), np), options,
@@ -579,6 +612,40 @@ double cell_size_for_target(const Mesh& input, double start, const Options& opti
        " output vertices within 10% (last try: " + std::to_string(num_vertices(output)) + ")");
 }
 
+/// The input faces where the topology check found defects, as a mesh.
+Mesh flagged_faces(const Mesh& input, const std::vector<RSR::Topology_defect<Mesh::Face_index>>& defects)
+{
+  std::set<Mesh::Face_index> flagged;
+  for(const auto& defect : defects)
+    flagged.insert(defect.input_faces.begin(), defect.input_faces.end());
+  Mesh report;
+  std::map<Mesh::Vertex_index, Mesh::Vertex_index> copy;
+  for(Mesh::Face_index f : flagged) {
+    std::vector<Mesh::Vertex_index> corners;
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(halfedge(f, input), input)) {
+      auto found = copy.find(v);
+      if(found == copy.end())
+        found = copy.emplace(v, report.add_vertex(input.point(v))).first;
+      corners.push_back(found->second);
+    }
+    if(report.add_face(corners) == Mesh::null_face()) // a face against the orientation of the others:
+      report.add_face(std::vector<Mesh::Vertex_index>(corners.rbegin(), corners.rend())); // keep it anyway
+  }
+  return report;
+}
+
+/// One line on stderr when the output's topology may differ from the input's.
+void warn_about_topology(const RSR::Statistics& s, const std::vector<RSR::Topology_defect<Mesh::Face_index>>& defects)
+{
+  if(!s.topology_checked || s.topology_preserved())
+    return;
+  std::cerr << "range_space_remesh: warning: the remesh may not have the input's topology ("
+            << s.closed_loops << " closed loops, " << s.non_disk_cells << " non-disk cells, " << s.lost_components
+            << " lost components, " << s.uncrossed_border_cycles << " lost border cycles; Euler characteristic "
+            << s.input_euler_characteristic << " -> " << s.output_euler_characteristic << ", "
+            << defects.size() << " defects); use --preserve-topology or a smaller cell size" << std::endl;
+}
+
 void print_stats(const Options& options, const Mesh& input, const Mesh& output,
                  const RSR::Remesh_statistics& all, double h, bool triangulated)
 {
@@ -618,6 +685,14 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
        << ", \"dual_dropped_pieces\": " << all.dual.dropped_pieces
        << ", \"collapsed_quads\": " << all.collapse.collapsed_quads
        << ", \"removed_doublets\": " << all.collapse.removed_doublets
+       << ", \"cell_size_used\": " << s.cell_size
+       << ", \"topology\": {\"checked\": " << (s.topology_checked ? "true" : "false")
+       << ", \"preserved\": " << (s.topology_preserved() ? "true" : "false")
+       << ", \"closed_loops\": " << s.closed_loops << ", \"harmless_loops\": " << s.harmless_loops
+       << ", \"non_disk_cells\": " << s.non_disk_cells << ", \"lost_components\": " << s.lost_components
+       << ", \"input_euler_characteristic\": " << s.input_euler_characteristic
+       << ", \"primal_euler_characteristic\": " << s.output_euler_characteristic
+       << ", \"refinements\": " << s.topology_refinements << "}"
        << ", \"valence_histogram\": {";
   bool first = true;
   for(const auto& [valence, count] : valences) {
@@ -625,7 +700,8 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
     first = false;
   }
   json << "}, \"time_ms\": {\"seeding\": " << s.time_seeding_ms << ", \"tracing\": " << s.time_tracing_ms
-       << ", \"faces\": " << s.time_faces_ms << ", \"output\": " << s.time_output_ms
+       << ", \"faces\": " << s.time_faces_ms << ", \"topology\": " << s.time_topology_ms
+       << ", \"output\": " << s.time_output_ms
        << ", \"dual\": " << all.dual.time_ms << ", \"collapse\": " << all.collapse.time_ms
        << ", \"relaxation\": " << all.time_relaxation_ms
        << ", \"total\": " << all.time_total_ms << "}}";
@@ -641,10 +717,14 @@ int main(int argc, char** argv)
   CGAL::set_warning_handler([](const char*, const char*, const char*, int, const char*) {});
   try {
     Options options = parse_arguments(argc, argv);
+    std::vector<RSR::Topology_defect<Mesh::Face_index>> defects;
+    options.defects = &defects;
     bool triangulated = false;
     const Mesh input = with_creases_opened(read_input(options.input, triangulated), options);
     if(!is_supported_format(options.output))
       fail("cannot write '" + options.output + "': unsupported format (use .off .obj .ply .stl)");
+    if(!options.topology_report.empty() && !is_supported_format(options.topology_report))
+      fail("cannot write '" + options.topology_report + "': unsupported format (use .off .obj .ply .stl)");
 
     double h = options.cell_size;
     if(!options.absolute) {
@@ -681,6 +761,9 @@ int main(int argc, char** argv)
            " pair(s) of parallel edges, which a mesh file cannot store; use a smaller cell size "
            "or --output primal");
     write_atomically(output, options.output);
+    if(!options.topology_report.empty())
+      write_atomically(flagged_faces(input, defects), options.topology_report);
+    warn_about_topology(stats.primal, defects);
     if(options.stats)
       print_stats(options, input, output, stats, h, triangulated);
     return EXIT_SUCCESS;

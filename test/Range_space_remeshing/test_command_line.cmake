@@ -122,6 +122,31 @@ if(NOT plain_collapsed EQUAL 0 OR NOT collapsed GREATER 0 OR NOT collapse_non_qu
   math(EXPR failures "${failures} + 1")
 endif()
 
+# topology: a coarse cell size is flagged (a warning on stderr, the faces in the
+# report), --preserve-topology refines the cell size until the check passes
+run(0 t.off --stats --output primal --cell-size 0.1 --topology-report flagged.off ${elephant} t.off)
+string(JSON coarse_preserved GET "${out}" topology preserved)
+string(JSON coarse_non_disk GET "${out}" topology non_disk_cells)
+if(coarse_preserved OR NOT coarse_non_disk GREATER 0 OR NOT err MATCHES "warning: the remesh may not have"
+   OR NOT EXISTS ${WORK_DIR}/flagged.off)
+  message(SEND_ERROR "coarse elephant not flagged: ${out}\n${err}")
+  math(EXPR failures "${failures} + 1")
+endif()
+run(0 u.off --stats --output primal --cell-size 0.1 --preserve-topology ${elephant} u.off)
+string(JSON kept_preserved GET "${out}" topology preserved)
+string(JSON kept_chi GET "${out}" topology primal_euler_characteristic)
+string(JSON input_chi GET "${out}" topology input_euler_characteristic)
+string(JSON asked GET "${out}" cell_size)
+string(JSON used GET "${out}" cell_size_used)
+if(NOT kept_preserved OR NOT kept_chi EQUAL input_chi OR NOT used LESS asked OR err MATCHES "warning")
+  message(SEND_ERROR "--preserve-topology: ${out}\n${err}")
+  math(EXPR failures "${failures} + 1")
+endif()
+run(2 v.off --seeded --preserve-topology ${elephant} v.off)
+expect_message("needs the complete scan" "--seeded --preserve-topology")
+run(2 w.off --topology-report flagged.txt ${elephant} w.off)
+expect_message("unsupported format" "--topology-report of an unknown format")
+
 # the other maps: D in the stats; the normal weight adapts the density to curvature
 run(0 g.off --stats --output primal --map gauss --cell-size 0.2 ${elephant} g.off)
 string(JSON gauss_d GET "${out}" D)
