@@ -51,24 +51,26 @@ struct Measure
   RSR::Statistics stats; // of the median run
 };
 
-RSR::Statistics run_once(const Mesh& input, double h, RSR::Seeding_method seeding, double& wall_ms)
+RSR::Statistics run_once(const Mesh& input, double h, RSR::Seeding_method seeding, double& wall_ms,
+                         bool check_topology = false)
 {
   Mesh output;
   const auto start = std::chrono::steady_clock::now();
   const auto stats = RSR::primal_remesh(
-      input, output, CGAL::parameters::grid_spacing(h).seeding_method(seeding));
+      input, output,
+      RSR::parameters::check_topology(check_topology, CGAL::parameters::grid_spacing(h).seeding_method(seeding)));
   wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }
 
-Measure measure(const Mesh& input, double h, RSR::Seeding_method seeding, int runs)
+Measure measure(const Mesh& input, double h, RSR::Seeding_method seeding, int runs, bool check_topology = false)
 {
   double wall;
-  run_once(input, h, seeding, wall); // warm-up
+  run_once(input, h, seeding, wall, check_topology); // warm-up
   std::vector<std::pair<double, RSR::Statistics>> results;
   std::vector<double> walls;
   for(int r = 0; r < runs; ++r) {
-    const auto stats = run_once(input, h, seeding, wall);
+    const auto stats = run_once(input, h, seeding, wall, check_topology);
     results.emplace_back(stats.time_total_ms, stats);
     walls.push_back(wall);
   }
@@ -91,6 +93,21 @@ double identity_cell_size_for(const Mesh& input, std::size_t target)
         return run_once(input, h, RSR::Seeding_method::COMPLETE_SCAN, wall).output_vertices;
       },
       0.01 * bbox_diagonal(input), target);
+}
+
+/// The cost of the topology check (complete scan): median contouring time without
+/// and with it, and the check's own time in the median run with it.
+void measure_topology_check(const std::string& name, const Mesh& input, double h, int runs)
+{
+  const Measure plain = measure(input, h, RSR::Seeding_method::COMPLETE_SCAN, runs);
+  const Measure checked = measure(input, h, RSR::Seeding_method::COMPLETE_SCAN, runs, true);
+  const auto& s = checked.stats;
+  char line[512];
+  std::snprintf(line, sizeof(line), "| %s | %.5g | %zu | %.2f | %.2f | %.2f | %.1f %% | %s | %zu | %zu | %zu |",
+                name.c_str(), h, s.output_vertices, plain.median_total, checked.median_total, s.time_topology_ms,
+                100. * s.time_topology_ms / plain.median_total, s.topology_preserved() ? "yes" : "no",
+                s.harmless_loops, s.closed_loops, s.non_disk_cells);
+  std::cout << line << std::endl;
 }
 
 /// RMS and maximum of the distances from points sampled on `from` to `to`.
@@ -264,6 +281,13 @@ int main(int argc, char** argv)
             << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for(const auto& [name, input, h, contour_ms] : duals)
     measure_dual(name, input, h, runs, contour_ms);
+  std::cout << "\nThe cost of the topology check (`check_topology(true)`, complete scan, same cell sizes; "
+               "check ms: its own time in the median run, share: of the contouring without it):\n\n"
+            << "| mesh | cell size | output vertices | contouring ms | with the check ms | check ms | share "
+               "| topology preserved | harmless loops | closed loops | non-disk cells |\n"
+            << "|---|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|\n";
+  for(const auto& [name, input, h, contour_ms] : duals)
+    measure_topology_check(name, input, h, runs);
   std::cout << "\nThe cost of the dimension D (complete scan, same output size; D = 6: position and "
                "normal, normal weight 0.5 bounding-box diagonals; D = 9: and colours generated from the "
                "position, colour weight 0.2 diagonals):\n\n"

@@ -362,6 +362,28 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
                             is thrown when it would be exceeded}
       \cgalParamDefault{50,000,000}
     \cgalParamNEnd
+    \cgalParamNBegin{check_topology}
+      \cgalParamDescription{whether to check that the output has the topology of `tm`
+                            (complete scan only): fills the topology fields of the
+                            returned `Statistics`; see the manual's section on topology}
+      \cgalParamType{bool}
+      \cgalParamDefault{`false`}
+      \cgalParamExtra{costs a few percent of the run where the cell size resolves the surface}
+    \cgalParamNEnd
+    \cgalParamNBegin{preserve_topology}
+      \cgalParamDescription{whether to reduce the cell size (by factors of \f$1/\sqrt{2}\f$)
+                            until the check finds no defect; the size used is
+                            `Statistics::cell_size`}
+      \cgalParamType{bool}
+      \cgalParamDefault{`false`}
+      \cgalParamExtra{implies `check_topology`; needs the complete scan}
+    \cgalParamNEnd
+    \cgalParamNBegin{topology_visitor}
+      \cgalParamDescription{called with each `Topology_defect` the check finds (the cells and
+                            input faces concerned)}
+      \cgalParamType{a callable taking a `const Topology_defect<face_descriptor>&`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
     \cgalParamNBegin{vertex_point_map}\cgalParamDefault{`get(CGAL::vertex_point, tm)`}\cgalParamNEnd
     \cgalParamNBegin{geom_traits}
       \cgalParamDescription{a model of `RangeSpaceTraits` of dimension D}
@@ -374,7 +396,9 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
 
 \returns what the run did, including per-stage times.
 \throws Remeshing_error on an empty mesh, a non-triangle face, a non-finite map value or cell size, a cell size so small that
-  range coordinates exceed 2^29 cells, or when the output cap would be exceeded.
+  range coordinates exceed 2^29 cells, or when the output cap would be exceeded (also
+  while `preserve_topology` refines the cell size), or with `preserve_topology` in the
+  seeded mode.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default) or `CGAL::Parallel_tag`
   (needs TBB: link `CGAL::TBB_support`). In parallel, the complete scan maps the

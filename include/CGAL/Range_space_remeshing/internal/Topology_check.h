@@ -136,66 +136,99 @@ private:
 
   // ---------------------------------------------------------- components
   /// Labels the input components, finds those without output, and returns the
-  /// Euler characteristic of the others (the input's is stored).
+  /// Euler characteristic of the others (the input's is stored). Union-find over
+  /// the faces in index order, not a traversal: neighbouring faces have close
+  /// indices in most meshes, so the passes stay in cache.
   long find_components(Statistics& stats)
   {
-    component_.assign(number_of_faces_, none);
-    std::vector<std::uint8_t> has_output(number_of_faces_, 0);
-    for(const auto& v : tracer_.intersection_vertices())
-      has_output[v.face_id] = 1;
-    std::vector<std::uint32_t> vertex_seen; // by vertex id: 1 + component
-    std::vector<std::uint32_t> stack, faces;
-    long chi_kept = 0;
-    for(std::uint32_t seed = 0; seed < number_of_faces_; ++seed) {
-      if(component_[seed] != none)
-        continue;
-      const std::uint32_t c = std::uint32_t(stats.input_components++);
-      long vertices = 0, half_edges = 0, border_edges = 0;
-      bool output = false;
-      faces.clear();
-      component_[seed] = c;
-      stack.assign(1, seed);
-      while(!stack.empty()) {
-        const std::uint32_t f = stack.back();
-        stack.pop_back();
-        faces.push_back(f);
-        output = output || has_output[f];
-        half_edges += 3;
-        for(int e = 0; e < 3; ++e) {
-          const std::uint32_t v = tracer_.corners_of(f)[e];
-          if(v >= vertex_seen.size())
-            vertex_seen.resize(std::size_t(v) + 1 + vertex_seen.size() / 2, 0);
-          if(vertex_seen[v] != c + 1) {
-            vertex_seen[v] = c + 1;
-            ++vertices;
-          }
-          const std::uint32_t n = tracer_.neighbours_of(f)[e];
-          if(n == Tracer::no_neighbour)
-            ++border_edges;
-          else if(component_[n] == none) {
-            component_[n] = c;
-            stack.push_back(n);
-          }
-        }
-      }
-      const long chi = vertices - (half_edges + border_edges) / 2 + long(faces.size());
-      input_euler_characteristic_ += chi;
-      if(output) {
-        chi_kept += chi;
-        continue;
-      }
-      lost_component_.resize(c + 1, 0);
-      lost_component_[c] = 1;
-      ++stats.lost_components;
-      add_defect(Topology_defect_kind::LOST_COMPONENT, cell_of_vertex(tracer_.corners_of(seed)[0]), faces);
+    std::vector<std::uint32_t> parent(number_of_faces_);
+    for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
+      parent[f] = f;
+      for(std::uint32_t n : tracer_.neighbours_of(f))
+        if(n != Tracer::no_neighbour && n < f)
+          unite(parent, f, n);
     }
+    struct Counts
+    {
+      long vertices = 0, half_edges = 0, border_edges = 0, faces = 0;
+      bool output = false;
+    };
+    std::vector<Counts> counts;
+    component_.assign(number_of_faces_, none);
+    std::vector<std::uint32_t> vertex_owner; // by vertex id: 1 + component
+    for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
+      std::uint32_t& c = component_[root(parent, f)];
+      if(c == none) {
+        c = std::uint32_t(counts.size());
+        counts.emplace_back();
+      }
+      component_[f] = c;
+      Counts& k = counts[c];
+      ++k.faces;
+      k.half_edges += 3;
+      for(int e = 0; e < 3; ++e) {
+        const std::uint32_t v = tracer_.corners_of(f)[e];
+        if(v >= vertex_owner.size())
+          vertex_owner.resize(std::size_t(v) + 1 + vertex_owner.size() / 2, 0);
+        if(vertex_owner[v] != c + 1) {
+          vertex_owner[v] = c + 1;
+          ++k.vertices;
+        }
+        k.border_edges += tracer_.neighbours_of(f)[e] == Tracer::no_neighbour ? 1 : 0;
+      }
+    }
+    for(const auto& v : tracer_.intersection_vertices())
+      counts[component_[v.face_id]].output = true;
+
+    stats.input_components = counts.size();
+    long chi_kept = 0;
+    lost_component_.assign(counts.size(), 0);
+    for(std::uint32_t c = 0; c < counts.size(); ++c) {
+      const Counts& k = counts[c];
+      const long chi = k.vertices - (k.half_edges + k.border_edges) / 2 + k.faces;
+      input_euler_characteristic_ += chi;
+      if(k.output)
+        chi_kept += chi;
+      else
+        lost_component_[c] = 1;
+    }
+    report_lost_components(stats);
     return chi_kept;
   }
 
-  bool is_lost(std::uint32_t f) const
+  static std::uint32_t root(std::vector<std::uint32_t>& parent, std::uint32_t x)
   {
-    return component_[f] < lost_component_.size() && lost_component_[component_[f]];
+    while(parent[x] != x)
+      x = parent[x] = parent[parent[x]];
+    return x;
   }
+
+  static void unite(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b)
+  {
+    a = root(parent, a);
+    b = root(parent, b);
+    if(a != b)
+      parent[(std::max)(a, b)] = (std::min)(a, b);
+  }
+
+  void report_lost_components(Statistics& stats)
+  {
+    std::vector<std::size_t> defect_of(lost_component_.size(), std::size_t(-1));
+    for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
+      const std::uint32_t c = component_[f];
+      if(!lost_component_[c])
+        continue;
+      if(defect_of[c] == std::size_t(-1)) {
+        defect_of[c] = defects_.size();
+        add_defect(Topology_defect_kind::LOST_COMPONENT, cell_of_vertex(tracer_.corners_of(f)[0]),
+                   std::vector<std::uint32_t>());
+        ++stats.lost_components;
+      }
+      defects_[defect_of[c]].input_faces.push_back(tracer_.face_of_id(f));
+    }
+  }
+
+  bool is_lost(std::uint32_t f) const { return lost_component_[component_[f]]; }
 
   // ---------------------------------------------------------- border cycles
   /// Border cycles whose vertices all lie in one cell (no hyperplane crosses them),
