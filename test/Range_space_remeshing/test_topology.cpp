@@ -9,6 +9,7 @@
 #include <CGAL/Range_space_remeshing/remesh.h>
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/generators.h>
 
 #include <algorithm>
 #include <map>
@@ -91,6 +92,17 @@ Mesh make_sphere_with_shallow_cap()
 
 // ------------------------------------------------------------------ runs
 
+/// Reads one of CGAL's sample meshes; a failure when the directory is given.
+bool read_sample_mesh(const std::string& mesh_dir, const std::string& name, Mesh& mesh)
+{
+  if(mesh_dir.empty())
+    return false;
+  const bool read = CGAL::IO::read_polygon_mesh(mesh_dir + "/" + name + ".off", mesh);
+  CHECK(read);
+  return read;
+}
+
+
 struct Checked_run
 {
   RSR::Statistics stats;
@@ -166,6 +178,26 @@ void test_flagged_then_preserved(const char* name, const Mesh& mesh, double coar
   CHECK(clean.defects.empty());
 }
 
+/// The parallel complete scan counts the untraced pieces too: the same check.
+void test_parallel_scan_agrees(const Mesh& mesh, double cell_size)
+{
+#if defined(CGAL_LINKED_WITH_TBB)
+  Mesh sequential, parallel;
+  const auto np = RSR::parameters::check_topology(true, params::grid_spacing(cell_size));
+  const RSR::Statistics s = RSR::primal_remesh(mesh, sequential, np);
+  const RSR::Statistics p = RSR::primal_remesh<CGAL::Parallel_tag>(mesh, parallel, np);
+  CHECK(p.topology_checked);
+  CHECK_EQ(p.closed_loops, s.closed_loops);
+  CHECK_EQ(p.harmless_loops, s.harmless_loops);
+  CHECK_EQ(p.non_disk_cells, s.non_disk_cells);
+  CHECK_EQ(p.output_euler_characteristic, s.output_euler_characteristic);
+  CHECK_EQ(fingerprint(parallel), fingerprint(sequential));
+#else
+  (void)mesh;
+  (void)cell_size;
+#endif
+}
+
 void test_barbell()
 {
   Mesh barbell = make_barbell(1.6, 0.08);
@@ -173,6 +205,7 @@ void test_barbell()
     barbell.point(v) = barbell.point(v) + K::Vector_3(0.23, 0.27, 0.11);
   CHECK_EQ(euler_characteristic(barbell), 2);
   test_flagged_then_preserved("barbell", barbell, 0.5, 0.03);
+  test_parallel_scan_agrees(barbell, 0.5);
 }
 
 void test_thin_handled_torus()
@@ -182,6 +215,7 @@ void test_thin_handled_torus()
     torus.point(v) = torus.point(v) + K::Vector_3(0.125, 0.047, 0.075);
   CHECK_EQ(euler_characteristic(torus), 0);
   test_flagged_then_preserved("thin-handled torus", torus, 0.15, 0.012);
+  test_parallel_scan_agrees(torus, 0.15);
 }
 
 /// A shallow cap under the plane z = 0: one closed loop that only cuts a cap off
@@ -248,6 +282,37 @@ void test_lost_pieces()
   CHECK(!covered.stats.topology_preserved());
 }
 
+/// Localisation with borders: an open square patch (every region a disk reaching
+/// the border) beside a tetrahedron inside one cell, which makes the check locate
+/// cells. And a tetrahedron larger than the cells whose three tips poke through
+/// grid planes: each cap loop found once, and harmless.
+void test_borders_and_tips()
+{
+  Mesh mesh;
+  const int n = 10;
+  std::vector<Mesh::Vertex_index> v;
+  for(int r = 0; r <= n; ++r)
+    for(int c = 0; c <= n; ++c)
+      v.push_back(mesh.add_vertex(Point(c / double(n) + 0.013, r / double(n) + 0.029, 0.5)));
+  auto at = [&](int r, int c) { return v[r * (n + 1) + c]; };
+  for(int r = 0; r < n; ++r)
+    for(int c = 0; c < n; ++c) {
+      mesh.add_face(at(r, c), at(r, c + 1), at(r + 1, c + 1));
+      mesh.add_face(at(r, c), at(r + 1, c + 1), at(r + 1, c));
+    }
+  CGAL::make_tetrahedron(Point(4.6, 4.6, 4.6), Point(4.7, 4.6, 4.6), Point(4.6, 4.7, 4.6), Point(4.6, 4.6, 4.7), mesh);
+  const Checked_run inside = run_checked(mesh, 0.3);
+  print("square and tetrahedron", 0.3, inside.stats);
+  CHECK_EQ(inside.stats.lost_components, std::size_t(1));
+  CHECK_EQ(inside.stats.non_disk_cells, std::size_t(0));
+  CHECK_EQ(inside.stats.closed_loops, std::size_t(0));
+
+  const Checked_run tips = run_checked(mesh, 0.07);
+  print("square and tetrahedron", 0.07, tips.stats);
+  CHECK_EQ(tips.stats.harmless_loops, std::size_t(3));
+  CHECK(tips.stats.topology_preserved());
+}
+
 /// No false alarm where the cell size resolves the surface.
 void test_no_false_alarm(const std::string& mesh_dir)
 {
@@ -260,7 +325,7 @@ void test_no_false_alarm(const std::string& mesh_dir)
     CHECK(torus.stats.topology_preserved());
   }
   Mesh bunny;
-  if(mesh_dir.empty() || !CGAL::IO::read_polygon_mesh(mesh_dir + "/bunny00.off", bunny))
+  if(!read_sample_mesh(mesh_dir, "bunny00", bunny))
     return;
   const double diagonal = bbox_diagonal(bunny);
   for(double h : {0.01, 0.02}) {
@@ -270,13 +335,31 @@ void test_no_false_alarm(const std::string& mesh_dir)
   }
 }
 
+/// Borders: every hole kept once the topology is.
+void test_elephant_with_holes(const std::string& mesh_dir)
+{
+  Mesh holes;
+  if(!read_sample_mesh(mesh_dir, "elephant-with-holes", holes))
+    return;
+  const double diagonal = bbox_diagonal(holes);
+  const Checked_run fine = run_checked(holes, 0.01 * diagonal);
+  print("elephant-with-holes", 0.01 * diagonal, fine.stats);
+  CHECK(fine.stats.topology_preserved());
+  const Checked_run coarse = run_checked(holes, 0.05 * diagonal);
+  print("elephant-with-holes", 0.05 * diagonal, coarse.stats);
+  CHECK(!coarse.stats.topology_preserved());
+  CHECK(coarse.stats.uncrossed_border_cycles > 0);
+  const Checked_run preserved = run_checked(holes, 0.05 * diagonal, true);
+  print("elephant-with-holes", 0.05 * diagonal, preserved.stats);
+  CHECK(preserved.stats.topology_preserved());
+  CHECK_EQ(number_of_border_cycles(preserved.output), number_of_border_cycles(holes));
+}
+
 void test_refined_elephant(const std::string& mesh_dir)
 {
   Mesh elephant;
-  if(mesh_dir.empty() || !CGAL::IO::read_polygon_mesh(mesh_dir + "/refined_elephant.off", elephant)) {
-    CHECK(mesh_dir.empty());
+  if(!read_sample_mesh(mesh_dir, "refined_elephant", elephant))
     return;
-  }
   const double diagonal = bbox_diagonal(elephant);
   test_flagged_then_preserved("refined_elephant", elephant, 0.08 * diagonal, 0.004 * diagonal);
 }
@@ -286,9 +369,11 @@ int main(int argc, char** argv)
   const std::string mesh_dir = argc > 1 ? argv[1] : "";
   test_shallow_cap();
   test_lost_pieces();
+  test_borders_and_tips();
   test_barbell();
   test_thin_handled_torus();
   test_no_false_alarm(mesh_dir);
+  test_elephant_with_holes(mesh_dir);
   test_refined_elephant(mesh_dir);
   return report("test_topology");
 }

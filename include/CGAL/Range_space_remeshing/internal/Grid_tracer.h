@@ -1220,6 +1220,13 @@ public:
   {
     std::size_t loops = 0;
     std::vector<std::uint32_t> loop;
+    // the segments of the loops found: a face several loops cross is met again
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> found; // face -> (P, level) keys
+    auto key = [](int P, std::int32_t level) { return (std::uint64_t(std::uint32_t(level)) << 8) | std::uint64_t(P); };
+    auto is_found = [&](std::uint32_t f, int P, std::int32_t level) {
+      const auto it = found.find(f);
+      return it != found.end() && std::find(it->second.begin(), it->second.end(), key(P, level)) != it->second.end();
+    };
     for(std::uint32_t f = 0; f < untraced_piece_counts_.size(); ++f) {
       if(untraced_piece_counts_[f] < 0)
         throw std::logic_error("Range_space_remeshing: an arc crossed a face more often than "
@@ -1230,10 +1237,12 @@ public:
       for(int P = 0; P < D && untraced_piece_counts_[f] > 0; ++P)
         for(std::int32_t level = lowest_ceiling(t, P); level < highest_ceiling(t, P) &&
                                                        untraced_piece_counts_[f] > 0; ++level) {
-          if(segment_has_vertex(t, P, level) || !walk_loop(f, P, level, loop))
+          if(is_found(f, P, level) || segment_has_vertex(t, P, level) || !walk_loop(f, P, level, loop))
             continue;
-          for(std::uint32_t g : loop)
+          for(std::uint32_t g : loop) {
             --untraced_piece_counts_[g];
+            found[g].push_back(key(P, level));
+          }
           const int e = exit_edge(t, P, level, 1);
           report(P, level, cell_of_crossing(*t.p[e], *t.p[(e + 1) % 3], P, level), loop);
           ++loops;

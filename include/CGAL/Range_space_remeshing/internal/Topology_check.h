@@ -316,6 +316,31 @@ private:
     }
   }
 
+  /// The cell of the border piece that starts at boundary vertex v going forward:
+  /// on the side of its hyperplane where the border edge ends.
+  template <class Vertex>
+  Levels cell_ahead(const Vertex& v) const
+  {
+    Levels c = v.cell;
+    const std::uint32_t end = tracer_.corners_of(v.face_id)[(v.border_edge + 1) % 3];
+    c[v.i] = v.k() - (tracer_.ceiling_of(end)[v.i] > v.k() ? 0 : 1);
+    return c;
+  }
+
+  /// The counts above take M inside a cell with its border: a region that reaches
+  /// the border has, for each open border piece between two boundary vertices in
+  /// it, -1 in chi_c (a half-open disk has chi_c = 0). Adds them back, so that such
+  /// a disk has excess 0 too; in the cells of `only` if given.
+  void add_border_pieces(Cell_map& excess, const Cell_map* only = nullptr) const
+  {
+    for(const auto& v : tracer_.intersection_vertices())
+      if(v.is_boundary() && !v.is_corner() && !is_lost(v.face_id)) {
+        const Levels c = cell_ahead(v);
+        if(only == nullptr || only->count(c))
+          ++excess[c];
+      }
+  }
+
   /// The cell of a traced face, from the sector it fills at one of its vertices.
   Levels cell_of_traced_face(const Primal_complex::Traced_face_corner& corner) const
   {
@@ -325,11 +350,11 @@ private:
     if(v.is_corner())
       return c;
     if(v.is_boundary()) {
-      // between the forward boundary edge and the arc (slots 0 -> 1): on the side of
-      // the end of the border edge; between the arc and the backward edge: the other
-      const std::uint32_t end = tracer_.corners_of(v.face_id)[(v.border_edge + 1) % 3];
-      const bool end_above = tracer_.ceiling_of(end)[v.i] > v.k();
-      c[v.i] = v.k() - ((s == 0) == end_above ? 0 : 1);
+      // between the forward boundary edge and the arc (slots 0 -> 1): the forward
+      // side; between the arc and the backward edge: the other
+      c = cell_ahead(v);
+      if(s != 0)
+        c[v.i] += c[v.i] == v.k() ? -1 : 1;
       return c;
     }
     const std::uint32_t along_i = (s % 2 == 0) ? s : t, along_j = (s % 2 == 0) ? t : s;
@@ -391,6 +416,7 @@ private:
     }
     for(const auto& corner : complex_.traced_face_corners())
       --excess[cell_of_traced_face(corner)];
+    add_border_pieces(excess);
     return excess;
   }
 
@@ -462,6 +488,8 @@ private:
       for(std::uint32_t f : region)
         in_region[f] = 0;
     }
+    const Cell_map seeded = excess;
+    add_border_pieces(excess, &seeded);
     return excess;
   }
 
