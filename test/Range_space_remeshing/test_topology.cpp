@@ -206,6 +206,15 @@ void test_barbell()
   CHECK_EQ(euler_characteristic(barbell), 2);
   test_flagged_then_preserved("barbell", barbell, 0.5, 0.03);
   test_parallel_scan_agrees(barbell, 0.5);
+
+  // the whole pipeline passes preserve_topology on: the quads have it too
+  Mesh quads;
+  const RSR::Remesh_statistics stats =
+      RSR::remesh(barbell, quads, RSR::parameters::preserve_topology(true, params::grid_spacing(0.5)));
+  CHECK(stats.primal.topology_preserved());
+  CHECK(CGAL::is_valid_polygon_mesh(quads));
+  CHECK_EQ(euler_characteristic(quads), 2);
+  CHECK_EQ(number_of_components(quads), std::size_t(1));
 }
 
 void test_thin_handled_torus()
