@@ -61,6 +61,7 @@ struct Statistics
   /// Filled when the named parameter `check_topology` (or `preserve_topology`) is
   /// set, by the complete scan only (see `Topology_defect_kind`).
   /// @{
+  /// whether the check ran
   bool topology_checked = false;
   /// closed curves where the surface meets a grid hyperplane without reaching a
   /// grid edge: no arc traces them
@@ -74,14 +75,17 @@ struct Statistics
   std::size_t non_disk_cells = 0;
   /// input components that give no output
   std::size_t lost_components = 0;
-  /// V - E + F of the input, and of the output
+  /// V - E + F of the input
   long input_euler_characteristic = 0;
+  /// V - E + F of the output
   long output_euler_characteristic = 0;
-  /// connected components of the input, and of the output
+  /// connected components of the input
   std::size_t input_components = 0;
+  /// connected components of the output
   std::size_t output_components = 0;
   /// times `preserve_topology` reduced the cell size before the check passed
   std::size_t topology_refinements = 0;
+  /// time of the check (of the last run, with `preserve_topology`)
   double time_topology_ms = 0;
   /// whether the check ran and found nothing: then every region of the surface in a
   /// cell is a disk bounded by one output face, and the output is a cell
