@@ -61,6 +61,7 @@ struct Statistics
   /// Filled when the named parameter `check_topology` (or `preserve_topology`) is
   /// set, by the complete scan only (see `Topology_defect_kind`).
   /// @{
+
   /// whether the check ran
   bool topology_checked = false;
   /// closed curves where the surface meets a grid hyperplane without reaching a
