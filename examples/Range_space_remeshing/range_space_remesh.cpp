@@ -104,7 +104,8 @@ const char* usage =
     "                        the triangles the arcs cross (sublinear), may miss pieces\n"
     "  --preserve-topology   reduce the cell size until the output has the input's\n"
     "                          topology (closed loops, non-disk cells, lost pieces:\n"
-    "                          see the manual); the cell size used is in --stats\n"
+    "                          see the manual) and, for the dual, no parallel edges;\n"
+    "                          the cell size used is in --stats\n"
     "  --no-topology-check   skip the topology check (on by default but with\n"
     "                          --seeded, which cannot check it); a warning is printed\n"
     "                          on stderr when the check finds a defect\n"
@@ -612,6 +613,20 @@ double cell_size_for_target(const Mesh& input, double start, const Options& opti
        " output vertices within 10% (last try: " + std::to_string(num_vertices(output)) + ")");
 }
 
+/// `remesh()`; with --preserve-topology and the dual output, the cell size is also
+/// refined (from the one the primal needed) until the dual has no parallel edges,
+/// which a mesh file could not store: the topology is kept for the file too.
+RSR::Remesh_statistics remesh_preserving_topology(const Mesh& input, double h, const Options& options,
+                                                  Mesh& output)
+{
+  RSR::Remesh_statistics stats = remesh(input, h, options, output);
+  for(int refinement = 0; options.preserve_topology && options.output_kind != "primal" &&
+                          stats.dual.parallel_edges > 0 && refinement < 10;
+      ++refinement)
+    stats = remesh(input, stats.primal.cell_size * std::sqrt(0.5), options, output);
+  return stats;
+}
+
 /// The input faces where the topology check found defects, as a mesh.
 Mesh flagged_faces(const Mesh& input, const std::vector<RSR::Topology_defect<Mesh::Face_index>>& defects)
 {
@@ -749,7 +764,7 @@ int main(int argc, char** argv)
     if(options.target_vertices > 0)
       h = cell_size_for_target(input, h, options, output, stats);
     else
-      stats = remesh(input, h, options, output);
+      stats = remesh_preserving_topology(input, h, options, output);
     if(num_faces(output) == 0)
       fail("the remesh is empty: at this cell size the surface is not resolved (" +
            std::to_string(stats.primal.dropped_pieces + stats.dual.dropped_pieces) +
