@@ -13,6 +13,7 @@
 #include <CGAL/Range_space_remeshing/internal/Color.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
+#include <CGAL/Range_space_remeshing/internal/Union_find.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
@@ -260,11 +261,7 @@ edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index, const HasD
   std::vector<std::size_t> parent(n), charge(n, 0);
   for(std::size_t i = 0; i < n; ++i)
     parent[i] = i;
-  auto root = [&](std::size_t x) {
-    while(parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  };
+  auto root = [&](std::size_t x) { return union_find_root(parent, x); };
   std::vector<halfedge_descriptor> low_edges; // edges with an end whose dual face is not a quad
   // a border vertex's dual face has one corner more than its valence (the dual vertex
   // of the border chain arriving); border vertices of valence 2 have no dual face

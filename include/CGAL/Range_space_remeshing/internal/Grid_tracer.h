@@ -557,8 +557,8 @@ private:
     int number_of_crossed_axes = 0;
     for(int q = 0; q < D; ++q) {
       // level k + eps lies strictly between lo and hi iff ceil(lo) <= k <= ceil(hi) - 1
-      first[q] = (std::min)({(*t.c[0])[q], (*t.c[1])[q], (*t.c[2])[q]});
-      last[q] = (std::max)({(*t.c[0])[q], (*t.c[1])[q], (*t.c[2])[q]}) - 1;
+      first[q] = lowest_ceiling(t, q);
+      last[q] = highest_ceiling(t, q) - 1;
       if(first[q] <= last[q])
         crossed_axes[number_of_crossed_axes++] = q;
     }
@@ -1251,8 +1251,9 @@ public:
     return loops;
   }
 
-  static constexpr std::uint32_t no_neighbour = std::uint32_t(-1);
+  static constexpr std::uint32_t no_neighbour = border;
   std::size_t number_of_input_faces() const { return face_of_id_.size(); }
+  std::size_t number_of_input_vertices() const { return mapped_.size(); }
   face_descriptor face_of_id(std::uint32_t face_id) const { return face_of_id_[face_id]; }
   /// the face's corners (vertex ids, counter-clockwise) and its neighbours across
   /// the edges corner e -> corner e+1 (`no_neighbour` on the border)

@@ -25,6 +25,8 @@
 // * a face whose boundary visits a vertex twice is split by a chord across the pinch;
 // * a piece that still has a face of degree below 3 is dropped.
 
+#include <CGAL/Range_space_remeshing/internal/Union_find.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
@@ -279,38 +281,32 @@ private:
   }
 
   // ---------------------------------------------------------- broken pieces
-  std::uint32_t find_root(std::vector<std::uint32_t>& parent, std::uint32_t x) const
-  {
-    while(parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  }
 
   void drop_broken_pieces()
   {
     std::vector<std::uint32_t> parent(number_of_vertices_);
     std::iota(parent.begin(), parent.end(), 0u);
     for(std::uint32_t h = 0; h < halfedges_.size(); ++h)
-      parent[find_root(parent, halfedges_[h].target)] = find_root(parent, source(h));
+      parent[union_find_root(parent, halfedges_[h].target)] = union_find_root(parent, source(h));
     std::vector<std::uint8_t> broken(number_of_vertices_, 0), has_halfedge(number_of_vertices_, 0);
     for(std::uint32_t h = 0; h < halfedges_.size(); ++h)
       has_halfedge[halfedges_[h].target] = 1;
     for(std::uint32_t f : unsplittable_faces_)
-      broken[find_root(parent, halfedges_[face_halfedge_[f]].target)] = 1;
+      broken[union_find_root(parent, halfedges_[face_halfedge_[f]].target)] = 1;
     for(std::uint32_t f = 0; f < face_halfedge_.size(); ++f) {
       const std::uint32_t h = face_halfedge_[f];
       const std::uint32_t h2 = halfedges_[halfedges_[h].next].next;
       const bool too_small = (h2 == h) || (halfedges_[h].next == h);
       const bool bad = too_small || halfedges_[h].face == halfedges_[halfedges_[h].twin].face;
       if(bad)
-        broken[find_root(parent, halfedges_[h].target)] = 1;
+        broken[union_find_root(parent, halfedges_[h].target)] = 1;
     }
     kept_vertex_.assign(number_of_vertices_, false);
     std::vector<std::uint8_t> counted(number_of_vertices_, 0);
     for(std::uint32_t v = 0; v < number_of_vertices_; ++v) {
       if(!has_halfedge[v])
         continue;
-      const std::uint32_t r = find_root(parent, v);
+      const std::uint32_t r = union_find_root(parent, v);
       kept_vertex_[v] = !broken[r];
       if(broken[r] && !counted[r]) {
         counted[r] = 1;
@@ -336,7 +332,7 @@ private:
     for(std::uint32_t v = 0; v < number_of_vertices_; ++v)
       if(kept_vertex_[v]) {
         ++euler_characteristic_;
-        const std::uint32_t r = find_root(parent, v);
+        const std::uint32_t r = union_find_root(parent, v);
         components_ += counted[r] ? 0 : 1;
         counted[r] = 1;
       }

@@ -31,6 +31,7 @@
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Topology_defect.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
+#include <CGAL/Range_space_remeshing/internal/Union_find.h>
 
 #include <algorithm>
 #include <cstdint>
@@ -84,7 +85,8 @@ public:
           loops_.back().cell[axis] = level;
         });
     const long chi_of_kept_components = find_components(stats);
-    find_lost_border_cycles();
+    if(stats.uncrossed_border_cycles > 0) // the scan counted them: walk them for their faces
+      find_lost_border_cycles();
     stats.input_euler_characteristic = input_euler_characteristic_;
     stats.output_euler_characteristic = complex_.euler_characteristic();
     stats.output_components = complex_.number_of_components();
@@ -155,9 +157,9 @@ private:
     };
     std::vector<Counts> counts;
     component_.assign(number_of_faces_, none);
-    std::vector<std::uint32_t> vertex_owner; // by vertex id: 1 + component
+    std::vector<std::uint32_t> vertex_owner(tracer_.number_of_input_vertices(), 0); // 1 + component
     for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
-      std::uint32_t& c = component_[root(parent, f)];
+      std::uint32_t& c = component_[union_find_root(parent, f)];
       if(c == none) {
         c = std::uint32_t(counts.size());
         counts.emplace_back();
@@ -168,8 +170,6 @@ private:
       k.half_edges += 3;
       for(int e = 0; e < 3; ++e) {
         const std::uint32_t v = tracer_.corners_of(f)[e];
-        if(v >= vertex_owner.size())
-          vertex_owner.resize(std::size_t(v) + 1 + vertex_owner.size() / 2, 0);
         if(vertex_owner[v] != c + 1) {
           vertex_owner[v] = c + 1;
           ++k.vertices;
@@ -196,17 +196,10 @@ private:
     return chi_kept;
   }
 
-  static std::uint32_t root(std::vector<std::uint32_t>& parent, std::uint32_t x)
-  {
-    while(parent[x] != x)
-      x = parent[x] = parent[parent[x]];
-    return x;
-  }
-
   static void unite(std::vector<std::uint32_t>& parent, std::uint32_t a, std::uint32_t b)
   {
-    a = root(parent, a);
-    b = root(parent, b);
+    a = union_find_root(parent, a);
+    b = union_find_root(parent, b);
     if(a != b)
       parent[(std::max)(a, b)] = (std::min)(a, b);
   }
@@ -296,6 +289,15 @@ private:
       }
   }
 
+  /// The cells the closed edge from vertex a to vertex b meets.
+  void cells_of_edge(std::uint32_t a, std::uint32_t b, std::vector<Levels>& cells) const
+  {
+    cells.clear();
+    add_once(cells, cell_of_vertex(a));
+    add_once(cells, cell_of_vertex(b));
+    add_crossing_cells(a, b, cells);
+  }
+
   void cells_of_face(std::uint32_t f, std::vector<Levels>& cells) const
   {
     cells.clear();
@@ -365,6 +367,8 @@ private:
 
   void index_vertices_by_face()
   {
+    if(!vertex_start_.empty())
+      return; // indexed already (the loops' cells were counted first)
     const auto& vertices = tracer_.intersection_vertices();
     vertex_start_.assign(std::size_t(number_of_faces_) + 1, 0);
     for(const auto& v : vertices)
@@ -386,7 +390,7 @@ private:
     index_vertices_by_face();
     Cell_map excess;
     std::vector<Levels> cells;
-    std::vector<std::uint8_t> vertex_counted;
+    std::vector<std::uint8_t> vertex_counted(tracer_.number_of_input_vertices(), 0);
     for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
       if(is_lost(f))
         continue;
@@ -398,21 +402,15 @@ private:
         const std::uint32_t n = tracer_.neighbours_of(f)[e];
         if(n != Tracer::no_neighbour && n < f)
           continue; // each edge once
-        cells.clear();
-        add_once(cells, cell_of_vertex(corners[e]));
-        add_once(cells, cell_of_vertex(corners[(e + 1) % 3]));
-        add_crossing_cells(corners[e], corners[(e + 1) % 3], cells);
+        cells_of_edge(corners[e], corners[(e + 1) % 3], cells);
         for(const Levels& c : cells)
           --excess[c];
       }
-      for(int e = 0; e < 3; ++e) {
-        if(corners[e] >= vertex_counted.size())
-          vertex_counted.resize(std::size_t(corners[e]) + 1 + vertex_counted.size() / 2, 0);
+      for(int e = 0; e < 3; ++e)
         if(!vertex_counted[corners[e]]) {
           vertex_counted[corners[e]] = 1;
           ++excess[cell_of_vertex(corners[e])];
         }
-      }
     }
     for(const auto& corner : complex_.traced_face_corners())
       --excess[cell_of_traced_face(corner)];
@@ -464,10 +462,7 @@ private:
         ++excess[c];
         const auto& corners = tracer_.corners_of(f);
         for(int e = 0; e < 3; ++e) {
-          cells.clear();
-          add_once(cells, cell_of_vertex(corners[e]));
-          add_once(cells, cell_of_vertex(corners[(e + 1) % 3]));
-          add_crossing_cells(corners[e], corners[(e + 1) % 3], cells);
+          cells_of_edge(corners[e], corners[(e + 1) % 3], cells);
           if(std::find(cells.begin(), cells.end(), c) == cells.end())
             continue;
           const std::uint32_t n = tracer_.neighbours_of(f)[e];
