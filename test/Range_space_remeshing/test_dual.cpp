@@ -15,6 +15,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <limits>
 #include <random>
 
 using namespace test;
@@ -185,14 +186,38 @@ void check_input(const std::string& name, const Mesh& input, double relative_cel
   CHECK(edge_length_spread(relaxed) < edge_length_spread(collapsed));
 }
 
+/// |A - sum values_k v_k v_k^T| relative to A's largest entry, and |V^T V - I|.
+double eigen_residual(const RSR::internal::Matrix3& a, const RSR::internal::Vec3& values,
+                      const std::array<RSR::internal::Vec3, 3>& vectors)
+{
+  double scale = 0, worst = 0;
+  for(const auto& row : a)
+    for(double x : row)
+      scale = std::max(scale, std::abs(x));
+  for(int i = 0; i < 3; ++i)
+    for(int j = 0; j < 3; ++j) {
+      double r = 0;
+      for(int k = 0; k < 3; ++k)
+        r += values[k] * vectors[k][i] * vectors[k][j];
+      worst = std::max({worst, std::abs(r - a[i][j]) / (scale > 0 ? scale : 1.),
+                        std::abs(RSR::internal::dot(vectors[i], vectors[j]) - (i == j))});
+      if(!std::isfinite(r))
+        return std::numeric_limits<double>::infinity();
+    }
+  return worst;
+}
+
 void test_symmetric_eigen()
 {
-  // A = sum values_k v_k v_k^T must be recovered, vectors orthonormal
+  // A = sum values_k v_k v_k^T must be recovered, vectors orthonormal: random matrices,
+  // diagonal ones, rank 1; then A = sum l_k u_k u_k^T in a random basis with repeated,
+  // nearly repeated (1e-9), zero and tiny eigenvalues, at scales from 1e-150 to 1e150
+  // (where the closed form's eigenvectors would be ill-conditioned without care)
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> coordinate(-1, 1);
-  double worst = 0;
+  double worst_random = 0, worst_structured = 0;
   for(int round = 0; round < 1000; ++round) {
-    std::array<std::array<double, 3>, 3> a;
+    RSR::internal::Matrix3 a;
     for(int i = 0; i < 3; ++i)
       for(int j = i; j < 3; ++j)
         a[i][j] = a[j][i] = (round % 3 == 0 && i != j) ? 0. : coordinate(rng);
@@ -202,20 +227,37 @@ void test_symmetric_eigen()
           a[i][j] = (i + 1) * (j + 1) * 0.1;
     RSR::internal::Vec3 values;
     std::array<RSR::internal::Vec3, 3> vectors;
-    // every other round starts from a basis around a random axis (the dual's fast path)
-    RSR::internal::Vec3 guess = RSR::internal::normalized({{coordinate(rng), coordinate(rng), coordinate(rng)}});
-    RSR::internal::symmetric_eigen_3(a, values, vectors, round % 2 ? &guess : nullptr);
-    for(int i = 0; i < 3; ++i)
-      for(int j = 0; j < 3; ++j) {
-        double r = 0;
-        for(int k = 0; k < 3; ++k)
-          r += values[k] * vectors[k][i] * vectors[k][j];
-        worst = std::max(worst, std::abs(r - a[i][j]));
-        worst = std::max(worst, std::abs(RSR::internal::dot(vectors[i], vectors[j]) - (i == j)));
-      }
+    RSR::internal::symmetric_eigen_3(a, values, vectors);
+    worst_random = std::max(worst_random, eigen_residual(a, values, vectors));
   }
-  std::cout << "symmetric eigen-decomposition: worst residual " << worst << std::endl;
-  CHECK(worst < 1e-12);
+  for(int round = 0; round < 6000; ++round) {
+    const RSR::internal::Vec3 x = RSR::internal::normalized({{coordinate(rng), coordinate(rng), coordinate(rng)}});
+    const RSR::internal::Vec3 y = RSR::internal::any_orthogonal(x), z = RSR::internal::cross(x, y);
+    const double base = coordinate(rng), other = coordinate(rng);
+    const std::array<std::array<double, 3>, 6> spectra = {{{{base, base, base}},
+                                                           {{base, base, other}},
+                                                           {{base, base * (1 + 1e-9), other}},
+                                                           {{1, 0, 0}},
+                                                           {{1, 1, 1e-12}},
+                                                           {{base, other, coordinate(rng)}}}};
+    const auto& l = spectra[round % 6];
+    const double scale = std::pow(10., 50. * (round % 7) - 150.);
+    RSR::internal::Matrix3 a;
+    for(int i = 0; i < 3; ++i)
+      for(int j = 0; j < 3; ++j)
+        a[i][j] = scale * (l[0] * x[i] * x[j] + l[1] * y[i] * y[j] + l[2] * z[i] * z[j]);
+    for(int i = 0; i < 3; ++i)
+      for(int j = 0; j < i; ++j)
+        a[i][j] = a[j][i];
+    RSR::internal::Vec3 values;
+    std::array<RSR::internal::Vec3, 3> vectors;
+    RSR::internal::symmetric_eigen_3(a, values, vectors);
+    worst_structured = std::max(worst_structured, eigen_residual(a, values, vectors));
+  }
+  std::cout << "symmetric eigen-decomposition: worst residual " << worst_random << " (random), " << worst_structured
+            << " (repeated eigenvalues, extreme scales)" << std::endl;
+  CHECK(worst_random < 1e-12);
+  CHECK(worst_structured < 1e-12);
 }
 
 void test_quad_cube()

@@ -52,7 +52,7 @@ inline std::pair<Vec3, Vec3> place_dual_vertex(const Tangent_planes& planes, Dua
     quadric.add_plane(plane.first, plane.second);
   }
   const Vec3 unit_normal = normalized(normal);
-  const Vec3 position = placement == Dual_placement::QEM ? quadric.minimiser(mass, internal::quadric_truncation, &unit_normal) : mass;
+  const Vec3 position = placement == Dual_placement::QEM ? quadric.minimiser(mass) : mass;
   return {position, unit_normal};
 }
 

@@ -157,7 +157,7 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
       continue;
     internal::Quadric quadric;
     quadric.add_planes(get(tangent_planes, v));
-    projection[i] = internal::Quadric_projection(quadric, internal::quadric_truncation, &normal[i]);
+    projection[i] = internal::Quadric_projection(quadric, internal::quadric_truncation);
   }
   for(int iteration = 0; iteration < iterations; ++iteration) {
     for(vertex_descriptor v : vertices(mesh)) {

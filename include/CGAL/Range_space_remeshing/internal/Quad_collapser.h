@@ -227,8 +227,7 @@ private:
     Quadric quadric;
     quadric.add_planes(get(planes_, a));
     quadric.add_planes(get(planes_, c));
-    const Vec3 n = merged_normal(a, c);
-    return Quadric_projection(quadric, quadric_truncation, n == Vec3{{0, 0, 0}} ? nullptr : &n)(mid);
+    return Quadric_projection(quadric, quadric_truncation)(mid);
   }
 
   Vec3 merged_normal(vertex_descriptor a, vertex_descriptor c) const
