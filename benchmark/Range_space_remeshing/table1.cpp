@@ -296,7 +296,8 @@ std::vector<Pipeline_result> table_pipeline(std::vector<Model>& models, int runs
   for(Model& model : models) {
     Mesh& input = model.mesh;
     auto colors = generate_colors(input, model.diagonal);
-    // the complete scan maps every vertex: normals in one pass over the faces, not lazily
+    // the complete scan maps every vertex: normals in one pass over the faces, not lazily,
+    // given to the remesher too (the output's normals are interpolated from them)
     auto normals = input.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:normal").first;
     const RSR::Position_normal_range_map f6(input.points(), normals, 1.0, normal_weight * model.diagonal);
     const RSR::Position_normal_color_range_map f9(input.points(), normals, colors, 1.0,
@@ -309,8 +310,9 @@ std::vector<Pipeline_result> table_pipeline(std::vector<Model>& models, int runs
         RSR::compute_vertex_normals(input, normals);
         const double normals_ms = ms_since(start);
         RSR::Remesh_statistics s =
-            n == 6 ? RSR::remesh(input, output, RSR::parameters::range_map(f6).grid_spacing(h))
-                   : RSR::remesh(input, output, RSR::parameters::range_map(f9).grid_spacing(h));
+            n == 6
+                ? RSR::remesh(input, output, RSR::parameters::range_map(f6).grid_spacing(h).vertex_normal_map(normals))
+                : RSR::remesh(input, output, RSR::parameters::range_map(f9).grid_spacing(h).vertex_normal_map(normals));
         s.primal.time_total_ms += normals_ms; // part of mapping the input
         s.time_total_ms += normals_ms;
         return s;

@@ -479,6 +479,33 @@ void test_one_pass_normals()
                      RSR::parameters::grid_origin(origin, RSR::parameters::range_map(precomputed).grid_spacing(0.3)));
   CHECK(num_vertices(from_lazy) > 100);
   CHECK_EQ(fingerprint(from_lazy), fingerprint(from_precomputed));
+
+  // the output's normals: interpolated from the input normals the caller gives
+  // (np_in), the same as from the remesher's own; a constant map gives its constant
+  auto output_normals = [&](const auto& np_in) {
+    Mesh out;
+    auto n = out.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:normal").first;
+    RSR::primal_remesh(ellipsoid, out, np_in, params::vertex_normal_map(n));
+    std::vector<K::Vector_3> result;
+    for(auto v : vertices(out))
+      result.push_back(n[v]);
+    return result;
+  };
+  const auto own = output_normals(params::grid_spacing(0.2));
+  const auto given = output_normals(params::grid_spacing(0.2).vertex_normal_map(normals));
+  const auto constant = output_normals(params::grid_spacing(0.2).vertex_normal_map(
+      CGAL::Constant_property_map<Mesh::Vertex_index, std::array<double, 3>>(std::array<double, 3>{{0, 0, 2}})));
+  double largest_difference = 0, off_constant = 0;
+  for(std::size_t i = 0; i < own.size(); ++i) {
+    largest_difference = std::max(largest_difference, std::sqrt((own[i] - given[i]).squared_length()));
+    off_constant = std::max(off_constant, std::sqrt((constant[i] - K::Vector_3(0, 0, 1)).squared_length()));
+  }
+  std::cout << "output normals from given input normals: " << own.size()
+            << " vertices, largest difference to the remesher's own " << largest_difference
+            << ", to a constant map's " << off_constant << std::endl;
+  CHECK(own.size() > 100 && own.size() == given.size() && own.size() == constant.size());
+  CHECK(largest_difference < 1e-12);
+  CHECK(off_constant < 1e-15);
 }
 
 int main()

@@ -384,6 +384,14 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
       \cgalParamType{a callable taking a `const Topology_defect<face_descriptor>&`}
       \cgalParamDefault{none}
     \cgalParamNEnd
+    \cgalParamNBegin{vertex_normal_map}
+      \cgalParamDescription{unit normals of the input's vertices, from which the output's normals
+                            (`np_out`) are interpolated}
+      \cgalParamType{a readable property map, vertex -> `std::array<double, 3>` or a CGAL 3-D vector}
+      \cgalParamDefault{area-weighted normals computed by the remesher (`Lazy_vertex_normal_map`'s)}
+      \cgalParamExtra{pass the map a normal-based range map reads (see `compute_vertex_normals()`)
+                      to save computing the normals twice}
+    \cgalParamNEnd
     \cgalParamNBegin{vertex_point_map}\cgalParamDefault{`get(CGAL::vertex_point, tm)`}\cgalParamNEnd
     \cgalParamNBegin{geom_traits}
       \cgalParamDescription{a model of `RangeSpaceTraits` of dimension D}
@@ -392,7 +400,7 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
   \cgalNamedParamsEnd
 \param np_out optional named parameters for `out`: `vertex_point_map`, and
   `vertex_normal_map` (a writable map receiving unit normals interpolated from the
-  input's vertex normals).
+  input's vertex normals, those of `np_in` if given).
 
 \returns what the run did, including per-stage times.
 \throws Remeshing_error on an empty mesh, a non-triangle face, a non-finite map value or cell size, a cell size so small that

@@ -45,8 +45,9 @@ as it was and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles
 \param tm the input triangle mesh, as for `primal_remesh()`.
 \param quads receives the remesh (appended); a `MutableFaceGraph`.
 \param np the named parameters of `primal_remesh()` (`range_map`, `grid_spacing`,
-  `grid_origin`, `seeding_method`, `seed_faces`, `maximum_number`,
-  `vertex_point_map`, `geom_traits`), plus `dual_placement` (default
+  `grid_origin`, `seeding_method`, `seed_faces`, `maximum_number`, `check_topology`,
+  `preserve_topology`, `topology_visitor`, `vertex_point_map`, `vertex_normal_map`,
+  `geom_traits`), plus `dual_placement` (default
   `Dual_placement::QEM`), `quad_collapse` (default `true`) and
   `number_of_relaxation_steps` (default 3).
 \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default) or `CGAL::Parallel_tag`, for

@@ -123,11 +123,16 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
   auto normal_map = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_normal_map),
                                      CGAL::Constant_property_map<out_vertex, Out_vector>());
   Lazy_vertex_normals<TriangleMesh, VPM, VertexIndexMap> input_normals(tm, vpm, vertex_index);
+  // the caller's input normals, if given (np_in): interpolated instead of computed
+  constexpr bool has_input_normals =
+      !is_default_parameter<NamedParametersIn, CGAL::internal_np::vertex_normal_map_t>::value;
+  using in_vertex = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  const auto given_normals = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_normal_map),
+                                              CGAL::Constant_property_map<in_vertex, Vec3>());
   // colours: sampled where the input has them (np_in) and the output wants them (np_out)
   constexpr bool wants_colors =
       !is_default_parameter<NamedParametersIn, CGAL::internal_np::vertex_color_map_t>::value &&
       !is_default_parameter<NamedParametersOut, CGAL::internal_np::vertex_color_map_t>::value;
-  using in_vertex = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   const auto input_colors = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_color_map),
                                              CGAL::Constant_property_map<in_vertex, CGAL::IO::Color>());
   auto output_colors = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_color_map),
@@ -138,7 +143,7 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
   const std::uint32_t none = Primal_complex::none;
   reserve_if_possible(out, vertices.size(), complex.halfedges().size() / 2,
                       complex.face_halfedges().size());
-  if constexpr(wants_normals) // each output vertex reads the normals of three corners
+  if constexpr(wants_normals && !has_input_normals) // each output vertex reads three corners' normals
     if(3 * 40 * vertices.size() >= num_vertices(tm))
       input_normals.compute_all();
   std::vector<out_vertex> vertex_of(vertices.size());
@@ -157,7 +162,11 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
       p[1] += w[c] * CGAL::to_double(q.y());
       p[2] += w[c] * CGAL::to_double(q.z());
       if constexpr(wants_normals) {
-        const auto nc = input_normals(corner);
+        Vec3 nc;
+        if constexpr(has_input_normals)
+          nc = to_vec3(get(given_normals, corner));
+        else
+          nc = input_normals(corner);
         for(int d = 0; d < 3; ++d)
           n[d] += w[c] * nc[d];
       }
