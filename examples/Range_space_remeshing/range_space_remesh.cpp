@@ -535,7 +535,7 @@ public:
   {
     if(!all_at_once)
       return;
-    table_ = std::make_shared<std::vector<value_type>>(input.number_of_vertices());
+    table_ = std::make_shared<std::vector<value_type>>(input.num_vertices()); // removed ones included: indices
     RSR::compute_vertex_normals(input, boost::make_iterator_property_map(
                                            table_->begin(), get(boost::vertex_index, input)));
   }
