@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -37,19 +38,30 @@ inline double bbox_diagonal(const Mesh& m)
 }
 
 /// The parameter (a cell size, an edge length) at which `run(parameter)` gives
-/// `target` output vertices within 3 %: secant steps on the square root of the vertex
-/// count, from `first_guess`.
+/// `target` output vertices within 3 %: steps h *= sqrt(count / target) from
+/// `first_guess` (the count goes as 1 / h^2), then, once a step overshoots, geometric
+/// bisection of the bracket, since the count is not smooth in h and the steps can cycle.
+/// Returns the closest parameter tried if none is within 3 %.
 template <class Run>
 double cell_size_for(Run run, double first_guess, std::size_t target)
 {
-  double h = first_guess;
+  double h = first_guess, best_h = h, best_error = std::numeric_limits<double>::infinity();
+  double too_fine = 0, too_coarse = 0; // bracket: too many vertices / too few
   for(int step = 0; step < 25; ++step) {
     const double ratio = double(run(h)) / double(target);
-    if(std::abs(ratio - 1) < 0.03)
+    if(std::abs(ratio - 1) < best_error) {
+      best_error = std::abs(ratio - 1);
+      best_h = h;
+    }
+    if(best_error < 0.03)
       break;
-    h *= std::sqrt(std::clamp(ratio, 0.25, 4.));
+    (ratio > 1 ? too_fine : too_coarse) = h;
+    if(too_fine > 0 && too_coarse > 0)
+      h = std::sqrt(too_fine * too_coarse);
+    else
+      h *= std::sqrt(std::clamp(ratio, 0.25, 4.));
   }
-  return h;
+  return best_h;
 }
 
 /// RMS and maximum of the distances from `samples` points spread uniformly over the

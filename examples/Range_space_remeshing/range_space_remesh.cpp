@@ -97,8 +97,8 @@ const char* usage =
     "                        polygons, every vertex of valence 4\n"
     "  --placement NAME      where dual vertices go: qem (the default: closest to the\n"
     "                        tangent planes of the piece's vertices) or average\n"
-    "  --collapse            collapse dual quads where that makes valences more\n"
-    "                        regular (the default)\n"
+    "  --collapse            collapse dual quads and rotate edges where that makes\n"
+    "                        valences more regular (the default)\n"
     "  --no-collapse         keep the dual as it is\n"
     "  --relax K             K relaxation iterations of the dual (default 3, 0: none)\n"
     "  --seeded              seeded traversal from one face per component: maps only\n"
@@ -734,6 +734,7 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
        << ", \"dual_dropped_pieces\": " << all.dual.dropped_pieces
        << ", \"collapsed_quads\": " << all.collapse.collapsed_quads
        << ", \"removed_doublets\": " << all.collapse.removed_doublets
+       << ", \"rotated_edges\": " << all.collapse.rotated_edges
        << ", \"cell_size_used\": " << s.cell_size
        << ", \"topology\": {\"checked\": " << (s.topology_checked ? "true" : "false")
        << ", \"preserved\": " << (s.topology_preserved() ? "true" : "false")

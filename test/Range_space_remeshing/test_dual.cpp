@@ -159,11 +159,15 @@ void check_input(const std::string& name, const Mesh& input, double relative_cel
                      collapsed_planes, params::vertex_normal_map(collapsed_normals)));
   check_collapsed(qem.quads, collapsed, cs);
   const Distance d_collapsed = distance_to(input, collapsed);
-  std::cout << "  removed " << cs.removed_doublets << " doublets, collapsed " << cs.collapsed_quads << " quads in " << cs.passes << " passes ("
+  Mesh without_rotations = qem.quads;
+  RSR::collapse_quads(without_rotations, params::do_flip(false));
+  std::cout << "  removed " << cs.removed_doublets << " doublets, collapsed " << cs.collapsed_quads
+            << " quads, rotated " << cs.rotated_edges << " edges in " << cs.passes << " passes ("
             << cs.refused_topology << " refused by topology, " << cs.refused_fold_over
             << " by fold-over): valence 4 " << 100 * valence_4_share(qem.quads) << " % -> "
             << 100 * valence_4_share(collapsed) << " %, RMS " << d_collapsed.rms << ", non-convex faces "
-            << non_convex_faces(qem.quads) << " -> " << non_convex_faces(collapsed) << std::endl;
+            << non_convex_faces(qem.quads) << " -> " << non_convex_faces(collapsed) << " (without rotations: valence 4 "
+            << 100 * valence_4_share(without_rotations) << " %)" << std::endl;
   CHECK(valence_4_share(collapsed) > valence_4_share(qem.quads));
   CHECK(d_collapsed.rms < 1.5 * d_qem.rms);
 
@@ -327,10 +331,12 @@ void test_collapse_on_other_meshes()
   const auto on_mesh = RSR::collapse_quads(quads);
   const auto on_polyhedron = RSR::collapse_quads(polyhedron);
   RSR::collapse_quads(twice);
-  std::cout << "torus dual: " << on_mesh.collapsed_quads << " collapses (Surface_mesh), "
-            << on_polyhedron.collapsed_quads << " (Polyhedron_3)" << std::endl;
+  std::cout << "torus dual: " << on_mesh.collapsed_quads << " collapses and " << on_mesh.rotated_edges
+            << " rotations (Surface_mesh), " << on_polyhedron.collapsed_quads << " and "
+            << on_polyhedron.rotated_edges << " (Polyhedron_3)" << std::endl;
   CHECK(on_mesh.collapsed_quads > 0);
   CHECK_EQ(on_polyhedron.collapsed_quads, on_mesh.collapsed_quads);
+  CHECK_EQ(on_polyhedron.rotated_edges, on_mesh.rotated_edges);
   CHECK_EQ(num_vertices(polyhedron), num_vertices(quads));
   CHECK(CGAL::is_valid_polygon_mesh(polyhedron));
   CHECK(fingerprint(twice) == fingerprint(quads)); // deterministic
@@ -357,6 +363,66 @@ void test_collapse_on_other_meshes()
   CHECK(!throws(open_quad));
   CHECK_EQ(RSR::collapse_quads(open_quad).collapsed_quads, std::size_t(0));
   CHECK_EQ(num_faces(open_quad), std::size_t(1));
+}
+
+/// A grid of 5 x 5 quads (gently curved, so that no corner is flat) with one inner
+/// edge rotated: two valence-3 and two valence-5 vertices, which no collapse can make
+/// regular. The rotation must turn the edge back, and nothing else change.
+void test_edge_rotation()
+{
+  auto grid_with_rotated_edge = []() {
+    auto at = [](int i, int j) { return Point(i, j, 0.02 * (i * i + j * j)); };
+    Mesh grid;
+    std::vector<Mesh::Vertex_index> v;
+    for(int j = 0; j <= 5; ++j)
+      for(int i = 0; i <= 5; ++i)
+        v.push_back(grid.add_vertex(at(i, j)));
+    auto id = [&](int i, int j) { return v[std::size_t(6 * j + i)]; };
+    for(int j = 0; j < 5; ++j)
+      for(int i = 0; i < 5; ++i)
+        if(j != 2 || (i != 2 && i != 3)) // quads (2, 2) and (3, 2) share the edge (3,2)-(3,3)
+          grid.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+    // their hexagon (2,2) (3,2) (4,2) (4,3) (3,3) (2,3), split along (2,2)-(4,3) instead
+    grid.add_face(id(2, 2), id(3, 2), id(4, 2), id(4, 3));
+    grid.add_face(id(4, 3), id(3, 3), id(2, 3), id(2, 2));
+    return grid;
+  };
+  auto inner_valence_energy = [](const Mesh& m) {
+    int energy = 0;
+    for(auto w : vertices(m))
+      if(!m.is_border(w))
+        energy += (int(degree(w, m)) - 4) * (int(degree(w, m)) - 4);
+    return energy;
+  };
+
+  Mesh grid = grid_with_rotated_edge();
+  CHECK(CGAL::is_valid_polygon_mesh(grid));
+  CHECK_EQ(inner_valence_energy(grid), 4);
+  const std::vector<Point> points_before(grid.points().begin(), grid.points().end());
+  const RSR::Collapse_statistics stats = RSR::collapse_quads(grid);
+  CHECK_EQ(stats.rotated_edges, std::size_t(1));
+  CHECK_EQ(stats.collapsed_quads, std::size_t(0));
+  CHECK(CGAL::is_valid_polygon_mesh(grid));
+  CHECK_EQ(inner_valence_energy(grid), 0);
+  CHECK_EQ(num_faces(grid), std::size_t(25));
+  CHECK(std::equal(points_before.begin(), points_before.end(), grid.points().begin()));
+  for(auto f : faces(grid)) // the regular grid again: every quad an axis-aligned unit square
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, grid), grid)) {
+      const Vector d = grid.point(target(h, grid)) - grid.point(source(h, grid));
+      CHECK(std::abs(d.x()) + std::abs(d.y()) == 1);
+    }
+
+  // not without do_flip, nor around a constrained vertex: then nothing lowers the energy
+  Mesh unflipped = grid_with_rotated_edge();
+  CHECK_EQ(RSR::collapse_quads(unflipped, params::do_flip(false)).rotated_edges, std::size_t(0));
+  CHECK_EQ(inner_valence_energy(unflipped), 4);
+  Mesh constrained = grid_with_rotated_edge();
+  auto is_constrained = constrained.add_property_map<Mesh::Vertex_index, bool>("v:constrained", false).first;
+  for(auto w : vertices(constrained))
+    is_constrained[w] = degree(w, constrained) == 5;
+  CHECK_EQ(RSR::collapse_quads(constrained, params::vertex_is_constrained_map(is_constrained)).rotated_edges,
+           std::size_t(0));
+  CHECK_EQ(inner_valence_energy(constrained), 4);
 }
 
 /// The relaxation on a quad mesh it did not produce, without tangent planes: a cube
@@ -437,6 +503,7 @@ int main(int argc, char** argv)
   test_symmetric_eigen();
   test_quad_cube();
   test_collapse_on_other_meshes();
+  test_edge_rotation();
   test_relax_on_cube();
   check_input("sphere", make_sphere(1.0, 4), 0.03);
   check_input("torus", make_torus(1.0, 0.4, 120, 60), 0.03);

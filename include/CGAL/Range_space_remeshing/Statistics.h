@@ -142,13 +142,18 @@ struct Collapse_statistics
   /// vertices of valence 2 dissolved first, each merging its two quads into one
   /// (each also removes one face and one vertex)
   std::size_t removed_doublets = 0;
+  /// edges between two quads turned to join the other corners of the two (each lowers
+  /// the valence energy and keeps all counts)
+  std::size_t rotated_edges = 0;
   /// passes: the first over all quads, each next one over the quads around the vertices
   /// that the previous pass changed, until none is left or the limit is hit
   std::size_t passes = 0;
-  /// collapses that would lower the valence energy but were refused because the result
-  /// would not be a valid manifold (link condition, doublet), summed over the passes
+  /// collapses and rotations that would lower the valence energy but were refused
+  /// because the result would not be a valid manifold (link condition, doublet),
+  /// summed over the passes
   std::size_t refused_topology = 0;
-  /// ... refused because a face around the merged vertex would fold over
+  /// ... refused because a face around the merged vertex would fold over (or, for a
+  /// rotation, a new quad would not be convex)
   std::size_t refused_fold_over = 0;
   double time_ms = 0;
 };

@@ -27,9 +27,9 @@ namespace Range_space_remeshing {
 /*!
 \ingroup PkgRangeSpaceRemeshingRef
 
-collapses quads of `mesh` along a diagonal where that makes the vertex valences more
-regular (section 6 of the paper). Collapsing the quad (a, b, c, d) along (a, c)
-merges a and c into one vertex and removes the quad; the edges a-b and b-c become one,
+collapses quads of `mesh` along a diagonal, and rotates edges between quads, where that
+makes the vertex valences more regular (section 6 of the paper, and beyond it).
+Collapsing the quad (a, b, c, d) along (a, c) merges a and c into one vertex and removes the quad; the edges a-b and b-c become one,
 and so do c-d and d-a, so an all-quad mesh stays all quads. A collapse is done when it
 lowers the valence energy \f$\sum (\mathrm{valence} - 4)^2\f$ of the vertices
 involved, and only if the result stays a valid manifold mesh:
@@ -40,12 +40,21 @@ involved, and only if the result stays a valid manifold mesh:
   vertex keeps a positive orientation with respect to the face's normal before the collapse;
 - a and c are not constrained (`vertex_is_constrained_map`).
 
+The collapses are interleaved with edge rotations (unless `do_flip` is `false`): the
+edge u-v between the quads (u, v, f1, f2) and (v, u, g1, g2) turns to join f1 and g1
+(or f2 and g2), when that lowers the same energy. No vertex moves and the counts stay:
+a rotation evens out valences where no collapse can, e.g. a valence-5 vertex beside a
+valence-3 one that is not across a quad from another valence-3 vertex. A rotation is
+done only if u and v keep a valence of at least 3 (2 on the border) and are not
+constrained, the two quads' six corners are distinct vertices, the new edge joins two
+vertices not yet joined, and both new quads are convex and face like the old pair.
+
 The merged vertex takes the union of the two vertices' tangent planes (their quadric
 error), and is placed as in the relaxation: the midpoint moved to the nearest
 minimiser of the squared distances to the merged tangent planes, along the directions
 they constrain (the normal in a smooth region; onto the crease line where the planes
-of two sides meet). Collapses are tried in passes, in decreasing order of energy decrease, until a
-pass collapses nothing or `number_of_iterations` passes have run.
+of two sides meet). Collapses and rotations are tried in passes, in decreasing order of
+energy decrease, until a pass changes nothing or `number_of_iterations` passes have run.
 
 \tparam PolygonMesh a model of `MutableFaceGraph` (e.g. `Surface_mesh`, `Polyhedron_3`).
 \param mesh a polygon mesh, valid, with or without border, whose faces are simple polygons. A
@@ -59,6 +68,7 @@ pass collapses nothing or `number_of_iterations` passes have run.
     `dualize()`; default: the planes of each vertex's incident faces, so that merged
     vertices stay on the mesh's faces, creases and corners);
   - `vertex_is_constrained_map` (vertex -> bool, default: none constrained);
+  - `do_flip` (bool, default `true`): whether edges are rotated too;
   - `number_of_iterations` (the maximum number of passes, default 10).
 Border vertices are never moved nor merged (so no border cycle moves or joins
 another); their regular valence is 3 in the energy.
@@ -83,6 +93,7 @@ Collapse_statistics collapse_quads(PolygonMesh& mesh,
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_property_map(CGAL::vertex_point, mesh));
   const int passes = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10);
+  const bool rotate_edges = choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true);
   auto constrained = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
                                       CGAL::Constant_property_map<vertex_descriptor, bool>(false));
   auto vertex_index = CGAL::get_initialized_vertex_index_map(mesh, np);
@@ -107,7 +118,7 @@ Collapse_statistics collapse_quads(PolygonMesh& mesh,
   auto face_index = CGAL::get_initialized_face_index_map(mesh, np);
   internal::Quad_collapser<PolygonMesh, VPM, decltype(planes), decltype(constrained),
                            decltype(vertex_index), decltype(face_index)>
-      collapser(mesh, vpm, planes, constrained, vertex_index, face_index, normals);
+      collapser(mesh, vpm, planes, constrained, vertex_index, face_index, normals, rotate_edges);
   Collapse_statistics stats = collapser.run(passes);
 
   if constexpr(has_normals) // before the garbage collection: indices still match

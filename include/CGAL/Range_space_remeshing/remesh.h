@@ -48,8 +48,8 @@ as it was and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles
   `grid_origin`, `seeding_method`, `seed_faces`, `maximum_number`, `check_topology`,
   `preserve_topology`, `topology_visitor`, `vertex_point_map`, `vertex_normal_map`,
   `geom_traits`), plus `dual_placement` (default
-  `Dual_placement::QEM`), `quad_collapse` (default `true`) and
-  `number_of_relaxation_steps` (default 3).
+  `Dual_placement::QEM`), `quad_collapse` (default `true`), `do_flip` (the collapse's
+  edge rotations, default `true`) and `number_of_relaxation_steps` (default 3).
 \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default) or `CGAL::Parallel_tag`, for
   the primal remesh (see `primal_remesh()`).
 \param np_out `vertex_point_map` of `quads`; `vertex_color_map` (receives colours, if `np`
@@ -116,7 +116,8 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
   if(choose_parameter(get_parameter(np, internal_np::quad_collapse), true))
     stats.collapse = collapse_quads(
         quads, parameters::vertex_tangent_planes_map(
-                   planes, CGAL::parameters::vertex_normal_map(normals).vertex_point_map(out_vpm)));
+                   planes, CGAL::parameters::vertex_normal_map(normals).vertex_point_map(out_vpm).do_flip(
+                               choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true))));
 
   const int steps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 3);
   if(steps > 0)

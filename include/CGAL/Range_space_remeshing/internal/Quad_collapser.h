@@ -12,6 +12,13 @@
 // place of opposite(h2), so edges a-b, b-c become one and so do c-d, d-a; the quad,
 // the edges of h1 and h2, and c are removed. Only pointers are rewired: no new
 // element, so descriptors and indices of the survivors stay valid.
+//
+// The collapses are interleaved with edge rotations (Tarini et al., Practical quad mesh
+// simplification, 2010): the edge u-v between the quads (u, v, f1, f2) and
+// (v, u, g1, g2) is turned to join f1-g1 or f2-g2, the other diagonals of the hexagon
+// the two quads form. u and v lose an edge, the new ends gain one; no vertex moves and
+// the counts stay, so a rotation evens out valences where no collapse can (a 5 beside
+// a 3 that is not across a quad from another 3).
 
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
@@ -21,8 +28,10 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -39,20 +48,25 @@ class Quad_collapser
   using face_descriptor = typename GT::face_descriptor;
   using Point = typename boost::property_traits<VertexPointMap>::value_type;
 
-  /// A quad worth collapsing, by how much its better diagonal lowers the energy.
+  /// A quad worth collapsing, by how much its better diagonal lowers the energy; or,
+  /// with an `edge` (a halfedge of `quad`), an edge worth rotating.
   struct Candidate
   {
     int energy_decrease;
-    std::size_t order; // tie-break, for determinism: position in the face sweep
+    // tie-breaks, for determinism: the quad's position in the face sweep, then 0 for
+    // its collapse, `rank_in_quad()` of the edge for a rotation (see collect_candidates())
+    std::size_t order;
+    std::size_t rank_in_quad;
     face_descriptor quad;
+    halfedge_descriptor edge;
   };
 
 public:
   /// `normals` holds unit normals by vertex index; merged vertices' are updated.
   Quad_collapser(PolygonMesh& mesh, VertexPointMap vpm, TangentPlanesMap planes,
                  ConstrainedMap constrained, VertexIndexMap vertex_index, FaceIndexMap face_index,
-                 std::vector<Vec3>& normals)
-    : mesh_(mesh), vpm_(vpm), planes_(planes), constrained_(constrained),
+                 std::vector<Vec3>& normals, bool rotate_edges)
+    : rotate_edges_(rotate_edges), mesh_(mesh), vpm_(vpm), planes_(planes), constrained_(constrained),
       vertex_index_(vertex_index), normals_(normals), face_index_(face_index),
       removed_faces_(index_bound(faces(mesh), face_index), false),
       touched_in_pass_(removed_faces_.size(), 0), valences_(index_bound(vertices(mesh), vertex_index)),
@@ -86,11 +100,15 @@ public:
       to_examine.clear();
       pass_ = pass;
       touched_ = &to_examine;
-      std::size_t collapsed = 0;
+      std::size_t collapsed = 0, rotated = 0;
       for(const Candidate& candidate : candidates) {
         // earlier collapses of this pass may have removed or changed the quad
         if(removed_faces_[get(face_index_, candidate.quad)] || degree(candidate.quad, mesh_) != 4)
           continue;
+        if(candidate.edge != null_halfedge()) {
+          rotated += try_rotation(candidate, stats);
+          continue;
+        }
         const halfedge_descriptor h0 = better_diagonal(candidate.quad);
         if(energy_decrease(h0) <= 0)
           continue;
@@ -107,6 +125,7 @@ public:
         ++collapsed;
       }
       stats.collapsed_quads += collapsed;
+      stats.rotated_edges += rotated;
       std::sort(to_examine.begin(), to_examine.end(), [&](face_descriptor f, face_descriptor g) {
         return get(face_index_, f) < get(face_index_, g);
       });
@@ -130,6 +149,11 @@ private:
       set_halfedge(v, h, mesh_);
   }
   Vec3 position(vertex_descriptor v) const { return to_vec3(get(vpm_, v)); }
+  static halfedge_descriptor null_halfedge() { return GT::null_halfedge(); }
+  int valence_energy(int valence, vertex_descriptor v) const
+  {
+    return (valence - regular_valence(v)) * (valence - regular_valence(v));
+  }
 
   /// The quads of `quads` with a collapse that lowers the valence energy, best first.
   void collect_candidates(const std::vector<face_descriptor>& quads, std::vector<Candidate>& candidates)
@@ -141,20 +165,58 @@ private:
         continue;
       const int decrease = energy_decrease(better_diagonal(f));
       if(decrease > 0)
-        candidates.push_back({decrease, order++, f});
+        candidates.push_back({decrease, order, 0, f, null_halfedge()});
+      if(rotate_edges_) // an edge between two examined quads is listed twice; the second finds it done
+        for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh_), mesh_)) {
+          const int rotation_decrease = best_rotation(h).second;
+          if(rotation_decrease > 0)
+            candidates.push_back({rotation_decrease, order, rank_in_quad(h), f, h});
+        }
+      ++order;
     }
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
-      return x.energy_decrease > y.energy_decrease ||
-             (x.energy_decrease == y.energy_decrease && x.order < y.order);
+      if(x.energy_decrease != y.energy_decrease)
+        return x.energy_decrease > y.energy_decrease;
+      // at equal decrease a collapse first: a rotation can take the valence-3 vertex a
+      // collapse needs, and leave two irregular vertices where the collapse left none
+      if((x.edge == null_halfedge()) != (y.edge == null_halfedge()))
+        return x.edge == null_halfedge();
+      return x.order < y.order || (x.order == y.order && x.rank_in_quad < y.rank_in_quad);
     });
   }
 
+  /// Ties between operations are broken by where the vertices are, not by vertex
+  /// indices nor by halfedge(quad): those differ between mesh types (a `Polyhedron_3`
+  /// copy of a `Surface_mesh` numbers its vertices in another order), the points do not.
+  bool comes_before(vertex_descriptor x, vertex_descriptor y) const
+  {
+    const Vec3 p = position(x), q = position(y);
+    return p < q || (p == q && index(x) < index(y)); // the index only for coincident points
+  }
+
   /// The halfedge h0 = a->b of the quad whose collapse (c into a) lowers the energy
-  /// most: one of the quad's first two halfedges (the two diagonals).
+  /// most; a tie, and which of a and c survives, go by `comes_before()`.
   halfedge_descriptor better_diagonal(face_descriptor quad) const
   {
+    auto from_first = [this](halfedge_descriptor h0) { // the same diagonal from a or from c
+      const halfedge_descriptor h2 = next(next(h0, mesh_), mesh_);
+      return comes_before(source(h0, mesh_), source(h2, mesh_)) ? h0 : h2;
+    };
     const halfedge_descriptor h = halfedge(quad, mesh_);
-    return energy_decrease(h) >= energy_decrease(next(h, mesh_)) ? h : next(h, mesh_);
+    const halfedge_descriptor x = from_first(h), y = from_first(next(h, mesh_));
+    const int x_decrease = energy_decrease(x), y_decrease = energy_decrease(y);
+    if(x_decrease != y_decrease)
+      return x_decrease > y_decrease ? x : y;
+    return comes_before(source(x, mesh_), source(y, mesh_)) ? x : y;
+  }
+
+  /// 1 + the rank of h's source among the quad's corners, by `comes_before()`.
+  std::size_t rank_in_quad(halfedge_descriptor h) const
+  {
+    std::size_t rank = 1;
+    for(vertex_descriptor w : CGAL::vertices_around_face(h, mesh_))
+      rank += comes_before(w, source(h, mesh_));
+    return rank;
   }
 
   /// Queues the faces around v for the next pass (once each).
@@ -178,10 +240,162 @@ private:
     const vertex_descriptor va = source(h0, mesh_), vb = target(h0, mesh_), vc = target(h1, mesh_),
                             vd = target(h2, mesh_);
     const int a = valence(va), b = valence(vb), c = valence(vc), d = valence(vd);
-    auto e = [this](int valence, vertex_descriptor v) {
-      return (valence - regular_valence(v)) * (valence - regular_valence(v));
-    };
+    auto e = [this](int valence, vertex_descriptor v) { return valence_energy(valence, v); };
     return e(a, va) + e(b, vb) + e(c, vc) + e(d, vd) - (e(a + c - 2, va) + e(b - 1, vb) + e(d - 1, vd));
+  }
+
+  /// The six halfedges around the two quads of the edge of h (u -> v), from v on:
+  /// hexagon[i] goes from corner i to corner i + 1, corner 0 is v and corner 3 is u.
+  /// False where the edge is not between two distinct quads.
+  bool hexagon_around(halfedge_descriptor h, std::array<halfedge_descriptor, 6>& hexagon) const
+  {
+    const halfedge_descriptor o = opposite(h, mesh_);
+    if(is_border(h, mesh_) || is_border(o, mesh_) || face(h, mesh_) == face(o, mesh_) ||
+       degree(face(h, mesh_), mesh_) != 4 || degree(face(o, mesh_), mesh_) != 4)
+      return false;
+    hexagon[0] = next(h, mesh_);
+    hexagon[3] = next(o, mesh_);
+    for(int i : {1, 2, 4, 5})
+      hexagon[i] = next(hexagon[i - 1], mesh_);
+    return true;
+  }
+
+  /// The better rotation of the edge of h: k (1 or 2: the new edge joins corners k and
+  /// k + 3 of the hexagon) and the decrease of the valence energy (<= 0: none lowers it).
+  std::pair<int, int> best_rotation(halfedge_descriptor h) const
+  {
+    const vertex_descriptor u = source(h, mesh_), v = target(h, mesh_);
+    const int before = valence_energy(valence(u), u) + valence_energy(valence(v), v);
+    const int after = valence_energy(valence(u) - 1, u) + valence_energy(valence(v) - 1, v);
+    // A new end at its lowest valence or above gains at most 1 from its new edge, so
+    // most edges (4-4 ones) cannot pay for a rotation: skip them before the hexagon.
+    // (This passes over the rare inner vertex of valence 2, a doublet left in place.)
+    if(before - after + 2 <= 0)
+      return {0, 0};
+    std::array<halfedge_descriptor, 6> hexagon;
+    if(!hexagon_around(h, hexagon))
+      return {0, 0};
+    std::pair<int, int> best = {0, 0};
+    for(int k : {1, 2}) {
+      const vertex_descriptor p = source(hexagon[k], mesh_), q = source(hexagon[k + 3], mesh_);
+      const int decrease = before + valence_energy(valence(p), p) + valence_energy(valence(q), q) -
+                           (after + valence_energy(valence(p) + 1, p) + valence_energy(valence(q) + 1, q));
+      if(best.first == 0 || decrease > best.second)
+        best = {k, decrease};
+    }
+    return best;
+  }
+
+  /// Rotates the candidate's edge if that still lowers the energy (earlier operations
+  /// of the pass may have changed the valences) and keeps a valid manifold whose two
+  /// new quads are convex and face like the old ones. Returns whether it did.
+  bool try_rotation(const Candidate& candidate, Collapse_statistics& stats)
+  {
+    const halfedge_descriptor h = candidate.edge;
+    bool still_in_quad = false; // h may have been rotated into another face
+    for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(candidate.quad, mesh_), mesh_))
+      still_in_quad = still_in_quad || g == h;
+    if(!still_in_quad)
+      return false;
+    const auto [k, decrease] = best_rotation(h);
+    if(decrease <= 0)
+      return false;
+    std::array<halfedge_descriptor, 6> hexagon;
+    hexagon_around(h, hexagon);
+    if(!rotation_keeps_manifold(h, hexagon, k)) {
+      ++stats.refused_topology;
+      return false;
+    }
+    if(!rotation_keeps_faces_unfolded(hexagon, k)) {
+      ++stats.refused_fold_over;
+      return false;
+    }
+    rotate(h, hexagon, k);
+    return true;
+  }
+
+  /// The hexagon's corners are six distinct vertices, the new edge's ends are not
+  /// joined yet, u and v keep their lowest valence, and neither is constrained (its
+  /// edges may be a feature the caller keeps).
+  bool rotation_keeps_manifold(halfedge_descriptor h, const std::array<halfedge_descriptor, 6>& hexagon,
+                               int k) const
+  {
+    const vertex_descriptor u = source(h, mesh_), v = target(h, mesh_);
+    if(get(constrained_, u) || get(constrained_, v) || valence(u) <= lowest_valence(u) ||
+       valence(v) <= lowest_valence(v))
+      return false;
+    std::array<vertex_descriptor, 6> corners;
+    for(int i = 0; i < 6; ++i)
+      corners[i] = source(hexagon[i], mesh_);
+    for(int i = 0; i < 6; ++i)
+      for(int j = i + 1; j < 6; ++j)
+        if(corners[i] == corners[j])
+          return false;
+    const vertex_descriptor p = corners[k], q = corners[k + 3];
+    for(vertex_descriptor w : CGAL::vertices_around_target(halfedge(p, mesh_), mesh_))
+      if(w == q)
+        return false;
+    return true;
+  }
+
+  /// Both new quads face like the two old ones together, and, as in a collapse, stay
+  /// convex where both old ones were (else each fan from the new edge turns like its quad).
+  bool rotation_keeps_faces_unfolded(const std::array<halfedge_descriptor, 6>& hexagon, int k) const
+  {
+    corners_.clear();
+    for(int i = 0; i < 6; ++i)
+      corners_.push_back(position(source(hexagon[i], mesh_)));
+    const Vec3 normal_before = newell_normal(corners_); // the hexagon's: both old quads'
+    auto quad_from = [this](int first) {
+      return std::vector<Vec3>{corners_[first % 6], corners_[(first + 1) % 6], corners_[(first + 2) % 6],
+                               corners_[(first + 3) % 6]};
+    };
+    bool were_convex = true;
+    for(const std::vector<Vec3>& old_quad : {quad_from(0), quad_from(3)})
+      were_convex = were_convex && is_convex(old_quad, newell_normal(old_quad));
+    for(const std::vector<Vec3>& quad : {quad_from(k), quad_from(k + 3)}) {
+      const Vec3 normal = newell_normal(quad);
+      if(!(dot(normal, normal_before) > 0) ||
+         !(were_convex ? is_convex(quad, normal) : fan_turns_with(quad, normal)))
+        return false;
+    }
+    return true;
+  }
+
+  /// Turns the edge of h (u -> v) to join hexagon corners k and k + 3: h's face becomes
+  /// corners k .. k + 3, the opposite face corners k + 3 .. k + 6.
+  void rotate(halfedge_descriptor h, const std::array<halfedge_descriptor, 6>& hexagon, int k)
+  {
+    const halfedge_descriptor o = opposite(h, mesh_);
+    const vertex_descriptor u = source(h, mesh_), v = target(h, mesh_);
+    const vertex_descriptor p = source(hexagon[k], mesh_), q = source(hexagon[k + 3], mesh_);
+    auto link = [this](halfedge_descriptor diagonal, const halfedge_descriptor* sides) {
+      const face_descriptor f = face(diagonal, mesh_);
+      set_next(diagonal, sides[0], mesh_);
+      set_next(sides[0], sides[1], mesh_);
+      set_next(sides[1], sides[2], mesh_);
+      set_next(sides[2], diagonal, mesh_);
+      for(int i = 0; i < 3; ++i)
+        set_face(sides[i], f, mesh_);
+      set_halfedge(f, diagonal, mesh_);
+    };
+    const std::array<halfedge_descriptor, 6> from_k = {hexagon[k], hexagon[k + 1], hexagon[(k + 2) % 6],
+                                                       hexagon[(k + 3) % 6], hexagon[(k + 4) % 6],
+                                                       hexagon[(k + 5) % 6]};
+    if(halfedge(u, mesh_) == o)
+      set_inner_halfedge(u, hexagon[2]); // hexagon[2] ends at corner 3, u
+    if(halfedge(v, mesh_) == h)
+      set_inner_halfedge(v, hexagon[5]); // hexagon[5] ends at corner 0, v
+    set_target(h, p, mesh_);
+    set_target(o, q, mesh_);
+    link(h, &from_k[0]);
+    link(o, &from_k[3]);
+    --valences_[index(u)];
+    --valences_[index(v)];
+    ++valences_[index(p)];
+    ++valences_[index(q)];
+    for(vertex_descriptor w : {u, v, p, q})
+      touch_faces_around(w);
   }
 
   /// Link condition for quads: the merged vertex has one disk of faces, no two edges
@@ -398,6 +612,7 @@ private:
       set_halfedge(f, replacement, mesh_);
   }
 
+  bool rotate_edges_;
   PolygonMesh& mesh_;
   VertexPointMap vpm_;
   TangentPlanesMap planes_;
