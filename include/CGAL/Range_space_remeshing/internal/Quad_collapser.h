@@ -287,8 +287,8 @@ private:
   }
 
   /// Rotates the candidate's edge if that still lowers the energy (earlier operations
-  /// of the pass may have changed the valences) and keeps a valid manifold whose two
-  /// new quads are convex and face like the old ones. Returns whether it did.
+  /// of the pass may have changed the valences), keeps a valid manifold and folds no
+  /// quad over (`rotation_keeps_faces_unfolded()`). Returns whether it did.
   bool try_rotation(const Candidate& candidate, Collapse_statistics& stats)
   {
     const halfedge_descriptor h = candidate.edge;
