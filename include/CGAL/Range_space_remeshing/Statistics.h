@@ -153,7 +153,7 @@ struct Collapse_statistics
   /// summed over the passes
   std::size_t refused_topology = 0;
   /// ... refused because a face around the merged vertex would fold over (or, for a
-  /// rotation, a new quad would not be convex)
+  /// rotation, a new quad would face the other way, or stop being convex)
   std::size_t refused_fold_over = 0;
   double time_ms = 0;
 };

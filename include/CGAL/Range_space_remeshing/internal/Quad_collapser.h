@@ -31,7 +31,6 @@
 #include <array>
 #include <cstddef>
 #include <type_traits>
-#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -168,7 +167,7 @@ private:
         candidates.push_back({decrease, order, 0, f, null_halfedge()});
       if(rotate_edges_) // an edge between two examined quads is listed twice; the second finds it done
         for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh_), mesh_)) {
-          const int rotation_decrease = best_rotation(h).second;
+          const int rotation_decrease = best_rotation(h).energy_decrease;
           if(rotation_decrease > 0)
             candidates.push_back({rotation_decrease, order, rank_in_quad(h), f, h});
         }
@@ -260,9 +259,16 @@ private:
     return true;
   }
 
-  /// The better rotation of the edge of h: k (1 or 2: the new edge joins corners k and
-  /// k + 3 of the hexagon) and the decrease of the valence energy (<= 0: none lowers it).
-  std::pair<int, int> best_rotation(halfedge_descriptor h) const
+  /// The better rotation of an edge: its hexagon, k (1 or 2: the new edge joins corners
+  /// k and k + 3) and the decrease of the valence energy (<= 0: none lowers it).
+  struct Rotation
+  {
+    std::array<halfedge_descriptor, 6> hexagon;
+    int k = 0;
+    int energy_decrease = 0;
+  };
+
+  Rotation best_rotation(halfedge_descriptor h) const
   {
     const vertex_descriptor u = source(h, mesh_), v = target(h, mesh_);
     const int before = valence_energy(valence(u), u) + valence_energy(valence(v), v);
@@ -270,18 +276,17 @@ private:
     // A new end at its lowest valence or above gains at most 1 from its new edge, so
     // most edges (4-4 ones) cannot pay for a rotation: skip them before the hexagon.
     // (This passes over the rare inner vertex of valence 2, a doublet left in place.)
-    if(before - after + 2 <= 0)
-      return {0, 0};
-    std::array<halfedge_descriptor, 6> hexagon;
-    if(!hexagon_around(h, hexagon))
-      return {0, 0};
-    std::pair<int, int> best = {0, 0};
+    Rotation best;
+    if(before - after + 2 <= 0 || !hexagon_around(h, best.hexagon))
+      return best;
     for(int k : {1, 2}) {
-      const vertex_descriptor p = source(hexagon[k], mesh_), q = source(hexagon[k + 3], mesh_);
+      const vertex_descriptor p = source(best.hexagon[k], mesh_), q = source(best.hexagon[k + 3], mesh_);
       const int decrease = before + valence_energy(valence(p), p) + valence_energy(valence(q), q) -
                            (after + valence_energy(valence(p) + 1, p) + valence_energy(valence(q) + 1, q));
-      if(best.first == 0 || decrease > best.second)
-        best = {k, decrease};
+      if(best.k == 0 || decrease > best.energy_decrease) {
+        best.k = k;
+        best.energy_decrease = decrease;
+      }
     }
     return best;
   }
@@ -297,20 +302,18 @@ private:
       still_in_quad = still_in_quad || g == h;
     if(!still_in_quad)
       return false;
-    const auto [k, decrease] = best_rotation(h);
-    if(decrease <= 0)
+    const Rotation rotation = best_rotation(h);
+    if(rotation.energy_decrease <= 0)
       return false;
-    std::array<halfedge_descriptor, 6> hexagon;
-    hexagon_around(h, hexagon);
-    if(!rotation_keeps_manifold(h, hexagon, k)) {
+    if(!rotation_keeps_manifold(h, rotation.hexagon, rotation.k)) {
       ++stats.refused_topology;
       return false;
     }
-    if(!rotation_keeps_faces_unfolded(hexagon, k)) {
+    if(!rotation_keeps_faces_unfolded(rotation.hexagon, rotation.k)) {
       ++stats.refused_fold_over;
       return false;
     }
-    rotate(h, hexagon, k);
+    rotate(h, rotation.hexagon, rotation.k);
     return true;
   }
 
@@ -353,13 +356,20 @@ private:
     bool were_convex = true;
     for(const std::vector<Vec3>& old_quad : {quad_from(0), quad_from(3)})
       were_convex = were_convex && is_convex(old_quad, newell_normal(old_quad));
-    for(const std::vector<Vec3>& quad : {quad_from(k), quad_from(k + 3)}) {
-      const Vec3 normal = newell_normal(quad);
-      if(!(dot(normal, normal_before) > 0) ||
-         !(were_convex ? is_convex(quad, normal) : fan_turns_with(quad, normal)))
+    for(const std::vector<Vec3>& quad : {quad_from(k), quad_from(k + 3)})
+      if(!turns_like_before(quad, normal_before, were_convex))
         return false;
-    }
     return true;
+  }
+
+  /// The rule of both operations for a changed face: its normal keeps the direction of
+  /// `normal_before`, and it stays convex if it was, else every triangle of its fan from
+  /// the first corner turns like it.
+  static bool turns_like_before(const std::vector<Vec3>& polygon, const Vec3& normal_before, bool was_convex)
+  {
+    const Vec3 normal = newell_normal(polygon);
+    return dot(normal, normal_before) > 0 &&
+           (was_convex ? is_convex(polygon, normal) : fan_turns_with(polygon, normal));
   }
 
   /// Turns the edge of h (u -> v) to join hexagon corners k and k + 3: h's face becomes
@@ -470,10 +480,7 @@ private:
         const Vec3 normal_before = newell_normal(corners_);
         const bool was_convex = is_convex(corners_, normal_before);
         corners_.front() = merged;
-        const Vec3 normal_after = newell_normal(corners_);
-        if(!(dot(normal_after, normal_before) > 0))
-          return false;
-        if(was_convex ? !is_convex(corners_, normal_after) : !fan_turns_with(corners_, normal_after))
+        if(!turns_like_before(corners_, normal_before, was_convex))
           return false;
       }
     return true;
