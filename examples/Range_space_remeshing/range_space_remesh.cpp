@@ -735,6 +735,7 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
        << ", \"collapsed_quads\": " << all.collapse.collapsed_quads
        << ", \"removed_doublets\": " << all.collapse.removed_doublets
        << ", \"rotated_edges\": " << all.collapse.rotated_edges
+       << ", \"neutral_rotations\": " << all.collapse.neutral_rotations
        << ", \"cell_size_used\": " << s.cell_size
        << ", \"topology\": {\"checked\": " << (s.topology_checked ? "true" : "false")
        << ", \"preserved\": " << (s.topology_preserved() ? "true" : "false")

@@ -10,11 +10,14 @@
 
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_items_with_id_3.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/copy_face_graph.h>
 
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <algorithm>
+#include <array>
 #include <limits>
 #include <random>
 
@@ -162,7 +165,8 @@ void check_input(const std::string& name, const Mesh& input, double relative_cel
   Mesh without_rotations = qem.quads;
   RSR::collapse_quads(without_rotations, params::do_flip(false));
   std::cout << "  removed " << cs.removed_doublets << " doublets, collapsed " << cs.collapsed_quads
-            << " quads, rotated " << cs.rotated_edges << " edges in " << cs.passes << " passes ("
+            << " quads, rotated " << cs.rotated_edges << " edges (" << cs.neutral_rotations
+            << " more to walk dipoles) in " << cs.passes << " passes ("
             << cs.refused_topology << " refused by topology, " << cs.refused_fold_over
             << " by fold-over): valence 4 " << 100 * valence_4_share(qem.quads) << " % -> "
             << 100 * valence_4_share(collapsed) << " %, RMS " << d_collapsed.rms << ", non-convex faces "
@@ -288,7 +292,8 @@ void test_collapse_on_other_meshes()
   Mesh with_doublet = cube;
   const auto on_cube = RSR::collapse_quads(cube); // planes and normals from the mesh itself
   CHECK_EQ(on_cube.collapsed_quads, std::size_t(0));
-  CHECK_EQ(on_cube.passes, std::size_t(1));
+  CHECK_EQ(on_cube.rotated_edges + on_cube.neutral_rotations, std::size_t(0));
+  CHECK_EQ(on_cube.passes, std::size_t(2)); // one that finds nothing to do, one walk that keeps nothing
   CHECK(fingerprint(cube) == cube_before);
 
   // a doublet: the quad in the middle of a side split into two quads sharing two
@@ -333,10 +338,12 @@ void test_collapse_on_other_meshes()
   RSR::collapse_quads(twice);
   std::cout << "torus dual: " << on_mesh.collapsed_quads << " collapses and " << on_mesh.rotated_edges
             << " rotations (Surface_mesh), " << on_polyhedron.collapsed_quads << " and "
-            << on_polyhedron.rotated_edges << " (Polyhedron_3)" << std::endl;
+            << on_polyhedron.rotated_edges << " (Polyhedron_3); " << on_mesh.neutral_rotations << " and "
+            << on_polyhedron.neutral_rotations << " rotations to walk dipoles" << std::endl;
   CHECK(on_mesh.collapsed_quads > 0);
   CHECK_EQ(on_polyhedron.collapsed_quads, on_mesh.collapsed_quads);
   CHECK_EQ(on_polyhedron.rotated_edges, on_mesh.rotated_edges);
+  CHECK_EQ(on_polyhedron.neutral_rotations, on_mesh.neutral_rotations);
   CHECK_EQ(num_vertices(polyhedron), num_vertices(quads));
   CHECK(CGAL::is_valid_polygon_mesh(polyhedron));
   CHECK(fingerprint(twice) == fingerprint(quads)); // deterministic
@@ -365,6 +372,16 @@ void test_collapse_on_other_meshes()
   CHECK_EQ(num_faces(open_quad), std::size_t(1));
 }
 
+/// Sum of (valence - 4)^2 over the inner vertices.
+int inner_valence_energy(const Mesh& m)
+{
+  int energy = 0;
+  for(auto w : vertices(m))
+    if(!m.is_border(w))
+      energy += (int(degree(w, m)) - 4) * (int(degree(w, m)) - 4);
+  return energy;
+}
+
 /// A grid of 5 x 5 quads (gently curved, so that no corner is flat) with one inner
 /// edge rotated: two valence-3 and two valence-5 vertices, which no collapse can make
 /// regular. The rotation must turn the edge back, and nothing else change.
@@ -386,13 +403,6 @@ void test_edge_rotation()
     grid.add_face(id(2, 2), id(3, 2), id(4, 2), id(4, 3));
     grid.add_face(id(4, 3), id(3, 3), id(2, 3), id(2, 2));
     return grid;
-  };
-  auto inner_valence_energy = [](const Mesh& m) {
-    int energy = 0;
-    for(auto w : vertices(m))
-      if(!m.is_border(w))
-        energy += (int(degree(w, m)) - 4) * (int(degree(w, m)) - 4);
-    return energy;
   };
 
   Mesh grid = grid_with_rotated_edge();
@@ -423,6 +433,81 @@ void test_edge_rotation()
   CHECK_EQ(RSR::collapse_quads(constrained, params::vertex_is_constrained_map(is_constrained)).rotated_edges,
            std::size_t(0));
   CHECK_EQ(inner_valence_energy(constrained), 4);
+}
+
+/// Rotates the edge of h, between two quads, to join corners k and k + 3 (k = 1 or 2)
+/// of the hexagon the quads form, corner 0 being target(h).
+void rotate_edge(Mesh& mesh, Mesh::Halfedge_index h, int k)
+{
+  const Mesh::Halfedge_index from_corner_0 = next(h, mesh);
+  CGAL::Euler::join_face(h, mesh);
+  std::array<Mesh::Halfedge_index, 6> hexagon; // hexagon[i] from corner i to corner i + 1
+  hexagon[0] = from_corner_0;
+  for(int i = 1; i < 6; ++i)
+    hexagon[i] = next(hexagon[i - 1], mesh);
+  CGAL::Euler::split_face(hexagon[(k + 5) % 6], hexagon[(k + 2) % 6], mesh);
+}
+
+/// Dipoles that no single operation mends. In a regular 9 x 9 grid (gently curved), an
+/// edge at the centre is rotated (two valence 3-5 pairs side by side, which one
+/// rotation mends), then a second edge is rotated where that keeps the valence energy:
+/// one pair moves a step away from the other. Most such configurations offer no
+/// collapse or rotation that lowers the energy: the walk must move the pair back.
+void test_dipole_walk()
+{
+  const int n = 9;
+  Mesh grid;
+  std::vector<Mesh::Vertex_index> v;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+      v.push_back(grid.add_vertex(Point(i, j, 0.02 * (i * i + j * j))));
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      auto id = [&](int a, int b) { return v[std::size_t((n + 1) * b + a)]; };
+      grid.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+    }
+  auto all_quads = [](const Mesh& m) {
+    return std::all_of(faces(m).begin(), faces(m).end(), [&](auto f) { return degree(f, m) == 4; });
+  };
+  auto inner_halfedges = [](const Mesh& m) {
+    std::vector<Mesh::Halfedge_index> inner;
+    for(auto e : edges(m))
+      if(!m.is_border(e))
+        inner.push_back(halfedge(e, m));
+    return inner;
+  };
+  const Mesh::Vertex_index centre = v[std::size_t((n + 1) * 4 + 4)];
+  std::size_t configurations = 0, walked = 0;
+  for(auto first : inner_halfedges(grid)) {
+    if(source(first, grid) != centre)
+      continue;
+    Mesh one_pair_moved = grid;
+    rotate_edge(one_pair_moved, first, 1);
+    CHECK_EQ(inner_valence_energy(one_pair_moved), 4);
+    for(auto second : inner_halfedges(one_pair_moved))
+      for(int k : {1, 2}) {
+        Mesh moved = one_pair_moved;
+        rotate_edge(moved, second, k);
+        if(!CGAL::is_valid_polygon_mesh(moved) || !all_quads(moved) || inner_valence_energy(moved) != 4)
+          continue;
+        ++configurations;
+        const std::vector<Point> points_before(moved.points().begin(), moved.points().end());
+        Mesh unflipped = moved;
+        const RSR::Collapse_statistics stats = RSR::collapse_quads(moved);
+        walked += stats.neutral_rotations > 0;
+        CHECK_EQ(inner_valence_energy(moved), 0);
+        CHECK_EQ(stats.collapsed_quads, std::size_t(0));
+        CHECK_EQ(num_faces(moved), std::size_t(n * n));
+        CHECK(CGAL::is_valid_polygon_mesh(moved));
+        CHECK(std::equal(points_before.begin(), points_before.end(), moved.points().begin()));
+        RSR::collapse_quads(unflipped, params::do_flip(false)); // no walk without rotations
+        CHECK_EQ(inner_valence_energy(unflipped), 4);
+      }
+  }
+  std::cout << "dipole walk: " << configurations << " grids with a moved valence 3-5 pair, " << walked
+            << " of them mended by a walk" << std::endl;
+  CHECK(configurations >= 8);
+  CHECK(walked >= configurations / 2);
 }
 
 /// The relaxation on a quad mesh it did not produce, without tangent planes: a cube
@@ -504,6 +589,7 @@ int main(int argc, char** argv)
   test_quad_cube();
   test_collapse_on_other_meshes();
   test_edge_rotation();
+  test_dipole_walk();
   test_relax_on_cube();
   check_input("sphere", make_sphere(1.0, 4), 0.03);
   check_input("torus", make_torus(1.0, 0.4, 120, 60), 0.03);

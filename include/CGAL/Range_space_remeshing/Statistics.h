@@ -145,8 +145,13 @@ struct Collapse_statistics
   /// edges between two quads turned to join the other corners of the two (each lowers
   /// the valence energy and keeps all counts)
   std::size_t rotated_edges = 0;
+  /// rotations that keep the valence energy, each kept only because the collapse or
+  /// rotation it made possible then lowered it (the pair moved a valence 3-5 dipole
+  /// onto another one); the operations they made possible are counted above
+  std::size_t neutral_rotations = 0;
   /// passes: the first over all quads, each next one over the quads around the vertices
-  /// that the previous pass changed, until none is left or the limit is hit
+  /// that the previous pass changed; when one changes nothing, a walk of the dipoles
+  /// (one more pass, if edges rotate); until a walk keeps nothing or the limit is hit
   std::size_t passes = 0;
   /// collapses and rotations that would lower the valence energy but were refused
   /// because the result would not be a valid manifold (link condition, doublet),

@@ -49,12 +49,20 @@ done only if u and v keep a valence of at least 3 (2 on the border) and are not
 constrained, the two quads' six corners are distinct vertices, the new edge joins two
 vertices not yet joined, and both new quads are convex and face like the old pair.
 
+What no single operation mends are mostly dipoles: a valence-3 vertex beside a
+valence-5 one. Once nothing lowers the energy, the dipoles are walked (also part of
+`do_flip`): a rotation that keeps the energy moves a dipole one step, and it is kept
+only if a collapse or a rotation around its four vertices then lowers the energy
+(two dipoles cancel); else it is turned back. Every kept pair lowers the energy, so
+the passes end.
+
 The merged vertex takes the union of the two vertices' tangent planes (their quadric
 error), and is placed as in the relaxation: the midpoint moved to the nearest
 minimiser of the squared distances to the merged tangent planes, along the directions
 they constrain (the normal in a smooth region; onto the crease line where the planes
 of two sides meet). Collapses and rotations are tried in passes, in decreasing order of
-energy decrease, until a pass changes nothing or `number_of_iterations` passes have run.
+energy decrease, until a pass (or a walk of the dipoles, which counts as one) changes
+nothing or `number_of_iterations` passes have run.
 
 \tparam PolygonMesh a model of `MutableFaceGraph` (e.g. `Surface_mesh`, `Polyhedron_3`).
 \param mesh a polygon mesh, valid, with or without border, whose faces are simple polygons. A

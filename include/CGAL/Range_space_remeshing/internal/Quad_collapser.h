@@ -18,7 +18,9 @@
 // (v, u, g1, g2) is turned to join f1-g1 or f2-g2, the other diagonals of the hexagon
 // the two quads form. u and v lose an edge, the new ends gain one; no vertex moves and
 // the counts stay, so a rotation evens out valences where no collapse can (a 5 beside
-// a 3 that is not across a quad from another 3).
+// a 3 that is not across a quad from another 3). When neither lowers the energy any
+// more, rotations that keep it move the remaining 3-5 pairs (dipoles) one step, where a
+// collapse or a rotation then cancels them (`walk_dipoles()`).
 
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
@@ -68,7 +70,8 @@ public:
     : rotate_edges_(rotate_edges), mesh_(mesh), vpm_(vpm), planes_(planes), constrained_(constrained),
       vertex_index_(vertex_index), normals_(normals), face_index_(face_index),
       removed_faces_(index_bound(faces(mesh), face_index), false),
-      touched_in_pass_(removed_faces_.size(), 0), valences_(index_bound(vertices(mesh), vertex_index)),
+      touched_in_pass_(removed_faces_.size(), 0), changed_in_walk_(removed_faces_.size(), 0),
+      listed_in_walk_(removed_faces_.size(), 0), valences_(index_bound(vertices(mesh), vertex_index)),
       on_border_(valences_.size(), 0)
   {
     for(vertex_descriptor v : vertices(mesh_)) {
@@ -83,7 +86,8 @@ public:
 
   /// Passes over the quads: the first over all of them, each next one over the quads
   /// whose vertex valences the previous pass changed (the others' energies are as
-  /// they were).
+  /// they were). Once a pass changes nothing, and if edges rotate, a pass walks the
+  /// dipoles (`walk_dipoles()`); what it changes starts the passes again.
   Collapse_statistics run(int maximum_passes)
   {
     Collapse_statistics stats;
@@ -93,38 +97,29 @@ public:
     for(face_descriptor f : faces(mesh_))
       if(!removed_faces_[get(face_index_, f)])
         to_examine.push_back(f);
-    for(int pass = 1; pass <= maximum_passes && !to_examine.empty(); ++pass) {
+    for(int pass = 1; pass <= maximum_passes; ++pass) {
+      const bool walk = to_examine.empty();
+      if(walk && !rotate_edges_)
+        break;
       ++stats.passes;
-      collect_candidates(to_examine, candidates);
-      to_examine.clear();
       pass_ = pass;
       touched_ = &to_examine;
-      std::size_t collapsed = 0, rotated = 0;
-      for(const Candidate& candidate : candidates) {
-        // earlier collapses of this pass may have removed or changed the quad
-        if(removed_faces_[get(face_index_, candidate.quad)] || degree(candidate.quad, mesh_) != 4)
-          continue;
-        if(candidate.edge != null_halfedge()) {
-          rotated += try_rotation(candidate, stats);
-          continue;
+      if(walk) {
+        if(walk_dipoles(stats) == 0)
+          break;
+      } else {
+        collect_candidates(to_examine, candidates);
+        to_examine.clear();
+        for(const Candidate& candidate : candidates) {
+          // earlier collapses of this pass may have removed or changed the quad
+          if(!is_live_quad(candidate.quad))
+            continue;
+          if(candidate.edge != null_halfedge())
+            try_rotation(candidate, stats);
+          else
+            try_collapse(candidate.quad, stats);
         }
-        const halfedge_descriptor h0 = better_diagonal(candidate.quad);
-        if(energy_decrease(h0) <= 0)
-          continue;
-        if(!keeps_manifold(h0)) {
-          ++stats.refused_topology;
-          continue;
-        }
-        const Vec3 position = merged_position(h0);
-        if(!keeps_faces_unfolded(h0, position)) {
-          ++stats.refused_fold_over;
-          continue;
-        }
-        collapse(h0, position);
-        ++collapsed;
       }
-      stats.collapsed_quads += collapsed;
-      stats.rotated_edges += rotated;
       std::sort(to_examine.begin(), to_examine.end(), [&](face_descriptor f, face_descriptor g) {
         return get(face_index_, f) < get(face_index_, g);
       });
@@ -221,13 +216,19 @@ private:
   /// Queues the faces around v for the next pass (once each).
   void touch_faces_around(vertex_descriptor v)
   {
+    if(!touching_)
+      return;
     for(face_descriptor g : CGAL::faces_around_target(halfedge(v, mesh_), mesh_)) {
       if(g == boost::graph_traits<PolygonMesh>::null_face())
         continue; // around a border vertex
-      std::size_t& stamp = touched_in_pass_[get(face_index_, g)];
-      if(stamp != pass_) {
-        stamp = pass_;
+      const std::size_t i = get(face_index_, g);
+      if(touched_in_pass_[i] != pass_) {
+        touched_in_pass_[i] = pass_;
         touched_->push_back(g);
+      }
+      if(changed_in_walk_[i] != walks_ + 1) {
+        changed_in_walk_[i] = walks_ + 1;
+        changed_since_walk_.push_back(g);
       }
     }
   }
@@ -280,9 +281,7 @@ private:
     if(before - after + 2 <= 0 || !hexagon_around(h, best.hexagon))
       return best;
     for(int k : {1, 2}) {
-      const vertex_descriptor p = source(best.hexagon[k], mesh_), q = source(best.hexagon[k + 3], mesh_);
-      const int decrease = before + valence_energy(valence(p), p) + valence_energy(valence(q), q) -
-                           (after + valence_energy(valence(p) + 1, p) + valence_energy(valence(q) + 1, q));
+      const int decrease = before - after + gain_of_new_ends(best.hexagon, k);
       if(best.k == 0 || decrease > best.energy_decrease) {
         best.k = k;
         best.energy_decrease = decrease;
@@ -291,16 +290,22 @@ private:
     return best;
   }
 
+  /// The change of the valence energy of hexagon corners k and k + 3 when they are joined.
+  int gain_of_new_ends(const std::array<halfedge_descriptor, 6>& hexagon, int k) const
+  {
+    const vertex_descriptor p = source(hexagon[k], mesh_), q = source(hexagon[k + 3], mesh_);
+    return valence_energy(valence(p), p) + valence_energy(valence(q), q) -
+           (valence_energy(valence(p) + 1, p) + valence_energy(valence(q) + 1, q));
+  }
+
   /// Rotates the candidate's edge if that still lowers the energy (earlier operations
   /// of the pass may have changed the valences), keeps a valid manifold and folds no
-  /// quad over (`rotation_keeps_faces_unfolded()`). Returns whether it did.
+  /// quad over (`rotation_keeps_faces_unfolded()`). Returns whether it did; counts the
+  /// rotation or the refusal in `stats`.
   bool try_rotation(const Candidate& candidate, Collapse_statistics& stats)
   {
     const halfedge_descriptor h = candidate.edge;
-    bool still_in_quad = false; // h may have been rotated into another face
-    for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(candidate.quad, mesh_), mesh_))
-      still_in_quad = still_in_quad || g == h;
-    if(!still_in_quad)
+    if(!still_in_quad(h, candidate.quad))
       return false;
     const Rotation rotation = best_rotation(h);
     if(rotation.energy_decrease <= 0)
@@ -314,7 +319,183 @@ private:
       return false;
     }
     rotate(h, rotation.hexagon, rotation.k);
+    ++stats.rotated_edges;
     return true;
+  }
+
+  bool is_live_quad(face_descriptor f) const
+  {
+    return !removed_faces_[get(face_index_, f)] && degree(f, mesh_) == 4;
+  }
+
+  /// Collapses the quad along its better diagonal if that lowers the energy, keeps a
+  /// valid manifold and folds no face over. Returns whether it did; counts the collapse
+  /// or the refusal in `stats`.
+  bool try_collapse(face_descriptor quad, Collapse_statistics& stats)
+  {
+    const halfedge_descriptor h0 = better_diagonal(quad);
+    if(energy_decrease(h0) <= 0)
+      return false;
+    if(!keeps_manifold(h0)) {
+      ++stats.refused_topology;
+      return false;
+    }
+    const Vec3 position = merged_position(h0);
+    if(!keeps_faces_unfolded(h0, position)) {
+      ++stats.refused_fold_over;
+      return false;
+    }
+    collapse(h0, position);
+    ++stats.collapsed_quads;
+    return true;
+  }
+
+  /// Once no operation lowers the energy by itself, what is left are mostly dipoles: a
+  /// valence-3 vertex beside a valence-5 one. A rotation that keeps the energy moves a
+  /// dipole by one step; it is kept only when a collapse or a rotation it makes
+  /// possible (around its four vertices) then lowers the energy, else it is turned
+  /// back. The energy drops at every kept pair, so the walk ends. Returns the number
+  /// of rotations kept; counts them and the operations they made possible in `stats`
+  /// (the refusals met on the way are the tries', not counted).
+  std::size_t walk_dipoles(Collapse_statistics& stats)
+  {
+    Collapse_statistics tries;
+    std::size_t kept = 0;
+    const std::vector<face_descriptor> quads = quads_to_walk();
+    for(face_descriptor f : quads) {
+      // a collapse made possible by an earlier walk may have removed it; and around a
+      // quad of regular corners, a rotation of one of its edges raises the energy
+      if(!is_live_quad(f) || has_regular_corners(f))
+        continue;
+      for(halfedge_descriptor h : quad_edges_by_rank(f)) {
+        if(!is_live_quad(f))
+          break;
+        std::array<halfedge_descriptor, 6> hexagon;
+        if(!still_in_quad(h, f) || !hexagon_around(h, hexagon))
+          continue;
+        const vertex_descriptor u = source(h, mesh_), v = target(h, mesh_);
+        const int loss_of_old_ends = valence_energy(valence(u), u) + valence_energy(valence(v), v) -
+                                     (valence_energy(valence(u) - 1, u) + valence_energy(valence(v) - 1, v));
+        for(int k : {1, 2}) {
+          if(loss_of_old_ends + gain_of_new_ends(hexagon, k) != 0 || !rotation_keeps_manifold(h, hexagon, k) ||
+             !rotation_keeps_faces_unfolded(hexagon, k))
+            continue;
+          const vertex_descriptor p = source(hexagon[k], mesh_), q = source(hexagon[k + 3], mesh_);
+          touching_ = false; // a rotation turned back changes nothing the next passes need
+          rotate(h, hexagon, k);
+          touching_ = true;
+          if(lower_energy_around({u, v, p, q}, tries)) {
+            for(vertex_descriptor w : {u, v, p, q})
+              if(valence(w) > 0) // not merged away by the collapse
+                touch_faces_around(w);
+            ++kept;
+            break;
+          }
+          std::array<halfedge_descriptor, 6> back;
+          hexagon_around(h, back);
+          touching_ = false;
+          rotate(h, back, 3 - k); // h joins u and v again
+          touching_ = true;
+          break;
+        }
+      }
+    }
+    stats.neutral_rotations += kept;
+    stats.collapsed_quads += tries.collapsed_quads;
+    stats.rotated_edges += tries.rotated_edges;
+    return kept;
+  }
+
+  /// The quads the next walk tries: all of them the first time, then those that the
+  /// operations since the last walk may have given a new chance (the faces around the
+  /// vertices they changed, and their neighbours), by face index (deterministic).
+  std::vector<face_descriptor> quads_to_walk()
+  {
+    std::vector<face_descriptor> quads;
+    ++walks_;
+    if(walks_ == 1) {
+      for(face_descriptor f : faces(mesh_))
+        if(is_live_quad(f))
+          quads.push_back(f);
+    } else {
+      for(face_descriptor g : changed_since_walk_) {
+        if(!is_live_quad(g))
+          continue;
+        for(vertex_descriptor w : CGAL::vertices_around_face(halfedge(g, mesh_), mesh_))
+          for(face_descriptor f : CGAL::faces_around_target(halfedge(w, mesh_), mesh_)) {
+            if(f == GT::null_face() || !is_live_quad(f) || listed_in_walk_[get(face_index_, f)] == walks_)
+              continue;
+            listed_in_walk_[get(face_index_, f)] = walks_;
+            quads.push_back(f);
+          }
+      }
+      std::sort(quads.begin(), quads.end(),
+                [this](face_descriptor f, face_descriptor g) { return get(face_index_, f) < get(face_index_, g); });
+    }
+    changed_since_walk_.clear();
+    return quads;
+  }
+
+  /// Whether the quad's four corners have their regular valence. Each of its edges
+  /// u-v then rotates to join a corner p of the quad to a vertex q of the next quad:
+  /// u, v and p add 3 to the energy, q takes away at most 1.
+  bool has_regular_corners(face_descriptor f) const
+  {
+    for(vertex_descriptor w : CGAL::vertices_around_face(halfedge(f, mesh_), mesh_))
+      if(valence(w) != regular_valence(w))
+        return false;
+    return true;
+  }
+
+  /// The halfedges of a quad, from its first corner by `comes_before()` on.
+  std::array<halfedge_descriptor, 4> quad_edges_by_rank(face_descriptor f) const
+  {
+    halfedge_descriptor first = halfedge(f, mesh_);
+    for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(f, mesh_), mesh_))
+      if(comes_before(source(h, mesh_), source(first, mesh_)))
+        first = h;
+    return {first, next(first, mesh_), next(next(first, mesh_), mesh_), prev(first, mesh_)};
+  }
+
+  /// Whether h is (still) a side of the quad: it may have been rotated into another
+  /// face, or unlinked by a collapse (which leaves its face pointer as it was).
+  bool still_in_quad(halfedge_descriptor h, face_descriptor quad) const
+  {
+    for(halfedge_descriptor g : CGAL::halfedges_around_face(halfedge(quad, mesh_), mesh_))
+      if(g == h)
+        return true;
+    return false;
+  }
+
+  /// Does the best collapse or rotation (that lowers the energy) among the quads
+  /// around `around`, if one is allowed. Returns whether it did one.
+  bool lower_energy_around(const std::array<vertex_descriptor, 4>& around, Collapse_statistics& stats)
+  {
+    std::vector<face_descriptor>& quads = nearby_quads_;
+    quads.clear();
+    for(vertex_descriptor w : around)
+      for(face_descriptor g : CGAL::faces_around_target(halfedge(w, mesh_), mesh_))
+        if(g != GT::null_face() && is_live_quad(g) && std::find(quads.begin(), quads.end(), g) == quads.end())
+          quads.push_back(g);
+    // the order of the faces around a vertex differs between mesh types, positions do not
+    std::vector<std::pair<vertex_descriptor, face_descriptor>>& by_corner = nearby_by_corner_;
+    by_corner.clear();
+    for(face_descriptor g : quads)
+      by_corner.emplace_back(source(quad_edges_by_rank(g)[0], mesh_), g);
+    std::sort(by_corner.begin(), by_corner.end(), [this](const auto& x, const auto& y) {
+      return comes_before(x.first, y.first);
+    });
+    for(std::size_t i = 0; i < quads.size(); ++i)
+      quads[i] = by_corner[i].second;
+    std::vector<Candidate>& candidates = nearby_candidates_;
+    collect_candidates(quads, candidates);
+    for(const Candidate& candidate : candidates) {
+      if(!is_live_quad(candidate.quad))
+        continue;
+      if(candidate.edge != null_halfedge() ? try_rotation(candidate, stats) : try_collapse(candidate.quad, stats))
+        return true;
+    }
+    return false;
   }
 
   /// The hexagon's corners are six distinct vertices, the new edge's ends are not
@@ -349,17 +530,17 @@ private:
     for(int i = 0; i < 6; ++i)
       corners_.push_back(position(source(hexagon[i], mesh_)));
     const Vec3 normal_before = newell_normal(corners_); // the hexagon's: both old quads'
-    auto quad_from = [this](int first) {
-      return std::vector<Vec3>{corners_[first % 6], corners_[(first + 1) % 6], corners_[(first + 2) % 6],
-                               corners_[(first + 3) % 6]};
+    std::vector<Vec3>& quad = quad_corners_;
+    auto quad_from = [&](int first) -> const std::vector<Vec3>& {
+      quad.clear();
+      for(int i = 0; i < 4; ++i)
+        quad.push_back(corners_[(first + i) % 6]);
+      return quad;
     };
-    bool were_convex = true;
-    for(const std::vector<Vec3>& old_quad : {quad_from(0), quad_from(3)})
-      were_convex = were_convex && is_convex(old_quad, newell_normal(old_quad));
-    for(const std::vector<Vec3>& quad : {quad_from(k), quad_from(k + 3)})
-      if(!turns_like_before(quad, normal_before, were_convex))
-        return false;
-    return true;
+    const bool were_convex = is_convex(quad_from(0), newell_normal(quad_from(0))) &&
+                             is_convex(quad_from(3), newell_normal(quad_from(3)));
+    return turns_like_before(quad_from(k), normal_before, were_convex) &&
+           turns_like_before(quad_from(k + 3), normal_before, were_convex);
   }
 
   /// The rule of both operations for a changed face: its normal keeps the direction of
@@ -502,6 +683,7 @@ private:
     for(halfedge_descriptor h : into_c)
       set_target(h, a, mesh_);
     valences_[index(a)] += valences_[index(c)] - 2;
+    valences_[index(c)] = 0; // merged away
     --valences_[index(b)];
     --valences_[index(d)];
 
@@ -629,6 +811,12 @@ private:
   FaceIndexMap face_index_;
   std::vector<bool> removed_faces_; // by face index: faces are never created
   std::vector<std::size_t> touched_in_pass_; // by face index: last pass that queued it
+  // by face index: 1 + the number of walks before the face's last change was listed
+  // (in changed_since_walk_), and the last walk that listed it to be tried
+  std::vector<std::size_t> changed_in_walk_, listed_in_walk_;
+  std::vector<face_descriptor> changed_since_walk_;
+  std::size_t walks_ = 0;
+  bool touching_ = true; // whether operations queue the faces they change
   std::vector<int> valences_;                // by vertex index
   std::vector<std::uint8_t> on_border_;      // by vertex index
   std::size_t pass_ = 0;
@@ -636,6 +824,9 @@ private:
   mutable std::vector<vertex_descriptor> around_a_;
   mutable std::vector<face_descriptor> faces_a_;
   std::vector<halfedge_descriptor> into_c_;
+  std::vector<face_descriptor> nearby_quads_;
+  std::vector<std::pair<vertex_descriptor, face_descriptor>> nearby_by_corner_;
+  std::vector<Candidate> nearby_candidates_;
   struct Unlinked // what a collapse (or a doublet removal) took out of the connectivity
   {
     face_descriptor quad;
@@ -644,6 +835,7 @@ private:
   };
   std::vector<Unlinked> unlinked_;
   mutable std::vector<Vec3> corners_;
+  mutable std::vector<Vec3> quad_corners_;
 };
 
 } // namespace internal
