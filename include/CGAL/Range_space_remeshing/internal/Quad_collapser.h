@@ -69,11 +69,13 @@ public:
                  std::vector<Vec3>& normals, bool rotate_edges)
     : rotate_edges_(rotate_edges), mesh_(mesh), vpm_(vpm), planes_(planes), constrained_(constrained),
       vertex_index_(vertex_index), normals_(normals), face_index_(face_index),
-      removed_faces_(index_bound(faces(mesh), face_index), false),
+      removed_faces_(index_bound(faces(mesh), face_index), false), is_quad_(removed_faces_.size(), false),
       touched_in_pass_(removed_faces_.size(), 0), changed_in_walk_(removed_faces_.size(), 0),
       listed_in_walk_(removed_faces_.size(), 0), valences_(index_bound(vertices(mesh), vertex_index)),
       on_border_(valences_.size(), 0)
   {
+    for(face_descriptor f : faces(mesh_))
+      is_quad_[get(face_index_, f)] = degree(f, mesh_) == 4;
     for(vertex_descriptor v : vertices(mesh_)) {
       valences_[index(v)] = int(degree(v, mesh_));
       on_border_[index(v)] = bool(is_border(v, mesh_));
@@ -155,9 +157,11 @@ private:
     candidates.clear();
     std::size_t order = 0;
     for(face_descriptor f : quads) {
-      if(removed_faces_[get(face_index_, f)] || degree(f, mesh_) != 4)
+      if(!is_live_quad(f))
         continue;
-      const int decrease = energy_decrease(better_diagonal(f));
+      // which of a and c survives changes nothing in the decrease: no tie-break yet
+      const halfedge_descriptor first = halfedge(f, mesh_);
+      const int decrease = (std::max)(energy_decrease(first), energy_decrease(next(first, mesh_)));
       if(decrease > 0)
         candidates.push_back({decrease, order, 0, f, null_halfedge()});
       if(rotate_edges_) // an edge between two examined quads is listed twice; the second finds it done
@@ -251,7 +255,7 @@ private:
   {
     const halfedge_descriptor o = opposite(h, mesh_);
     if(is_border(h, mesh_) || is_border(o, mesh_) || face(h, mesh_) == face(o, mesh_) ||
-       degree(face(h, mesh_), mesh_) != 4 || degree(face(o, mesh_), mesh_) != 4)
+       !is_quad(face(h, mesh_)) || !is_quad(face(o, mesh_)))
       return false;
     hexagon[0] = next(h, mesh_);
     hexagon[3] = next(o, mesh_);
@@ -323,10 +327,9 @@ private:
     return true;
   }
 
-  bool is_live_quad(face_descriptor f) const
-  {
-    return !removed_faces_[get(face_index_, f)] && degree(f, mesh_) == 4;
-  }
+  // No operation changes the degree of a face it keeps (see is_quad_).
+  bool is_quad(face_descriptor f) const { return is_quad_[get(face_index_, f)]; }
+  bool is_live_quad(face_descriptor f) const { return !removed_faces_[get(face_index_, f)] && is_quad(f); }
 
   /// Collapses the quad along its better diagonal if that lowers the energy, keeps a
   /// valid manifold and folds no face over. Returns whether it did; counts the collapse
@@ -377,26 +380,30 @@ private:
         const int loss_of_old_ends = valence_energy(valence(u), u) + valence_energy(valence(v), v) -
                                      (valence_energy(valence(u) - 1, u) + valence_energy(valence(v) - 1, v));
         for(int k : {1, 2}) {
-          if(loss_of_old_ends + gain_of_new_ends(hexagon, k) != 0 || !rotation_keeps_manifold(h, hexagon, k) ||
-             !rotation_keeps_faces_unfolded(hexagon, k))
+          if(loss_of_old_ends + gain_of_new_ends(hexagon, k) != 0 || !rotation_keeps_manifold(h, hexagon, k))
             continue;
           const vertex_descriptor p = source(hexagon[k], mesh_), q = source(hexagon[k + 3], mesh_);
           touching_ = false; // a rotation turned back changes nothing the next passes need
           rotate(h, hexagon, k);
           touching_ = true;
-          if(lower_energy_around({u, v, p, q}, tries)) {
+          // the geometric check last: most rotations make nothing possible. (The
+          // hexagon's sides are the same halfedges, at the same corners, after it.)
+          const std::vector<Candidate>& candidates = candidates_around({u, v, p, q});
+          if(!candidates.empty() && rotation_keeps_faces_unfolded(hexagon, k) && do_first_allowed(candidates, tries)) {
             for(vertex_descriptor w : {u, v, p, q})
               if(valence(w) > 0) // not merged away by the collapse
                 touch_faces_around(w);
             ++kept;
             break;
           }
+          // Back as it was: h runs from u to v again in its own face, so the faces keep
+          // their places (the quad's other edges are still to try) and so does `hexagon`.
+          // The hexagon around h now starts at p, where v is corner 6 - k.
           std::array<halfedge_descriptor, 6> back;
           hexagon_around(h, back);
           touching_ = false;
-          rotate(h, back, 3 - k); // h joins u and v again
+          rotate(h, back, 6 - k);
           touching_ = true;
-          break;
         }
       }
     }
@@ -467,9 +474,10 @@ private:
     return false;
   }
 
-  /// Does the best collapse or rotation (that lowers the energy) among the quads
-  /// around `around`, if one is allowed. Returns whether it did one.
-  bool lower_energy_around(const std::array<vertex_descriptor, 4>& around, Collapse_statistics& stats)
+  /// The collapses and rotations that lower the energy in the quads around `around`,
+  /// best first; ties go by where the quads are (`comes_before_quad()`), as the order
+  /// of the faces around a vertex differs between mesh types.
+  const std::vector<Candidate>& candidates_around(const std::array<vertex_descriptor, 4>& around)
   {
     std::vector<face_descriptor>& quads = nearby_quads_;
     quads.clear();
@@ -477,18 +485,41 @@ private:
       for(face_descriptor g : CGAL::faces_around_target(halfedge(w, mesh_), mesh_))
         if(g != GT::null_face() && is_live_quad(g) && std::find(quads.begin(), quads.end(), g) == quads.end())
           quads.push_back(g);
-    // the order of the faces around a vertex differs between mesh types, positions do not
-    std::vector<std::pair<vertex_descriptor, face_descriptor>>& by_corner = nearby_by_corner_;
-    by_corner.clear();
-    for(face_descriptor g : quads)
-      by_corner.emplace_back(source(quad_edges_by_rank(g)[0], mesh_), g);
-    std::sort(by_corner.begin(), by_corner.end(), [this](const auto& x, const auto& y) {
-      return comes_before(x.first, y.first);
-    });
-    for(std::size_t i = 0; i < quads.size(); ++i)
-      quads[i] = by_corner[i].second;
     std::vector<Candidate>& candidates = nearby_candidates_;
     collect_candidates(quads, candidates);
+    if(candidates.size() > 1)
+      std::sort(candidates.begin(), candidates.end(), [this](const Candidate& x, const Candidate& y) {
+        if(x.energy_decrease != y.energy_decrease)
+          return x.energy_decrease > y.energy_decrease;
+        if((x.edge == null_halfedge()) != (y.edge == null_halfedge()))
+          return x.edge == null_halfedge();
+        if(x.quad != y.quad)
+          return comes_before_quad(x.quad, y.quad);
+        return x.rank_in_quad < y.rank_in_quad;
+      });
+    return candidates;
+  }
+
+  /// Quads in the order of their corners, each list sorted by `comes_before()`.
+  bool comes_before_quad(face_descriptor f, face_descriptor g) const
+  {
+    auto sorted_corners = [this](face_descriptor quad) {
+      std::array<vertex_descriptor, 4> corners;
+      int i = 0;
+      for(vertex_descriptor w : CGAL::vertices_around_face(halfedge(quad, mesh_), mesh_))
+        corners[i++] = w;
+      std::sort(corners.begin(), corners.end(),
+                [this](vertex_descriptor x, vertex_descriptor y) { return comes_before(x, y); });
+      return corners;
+    };
+    const std::array<vertex_descriptor, 4> x = sorted_corners(f), y = sorted_corners(g);
+    return std::lexicographical_compare(x.begin(), x.end(), y.begin(), y.end(),
+                                        [this](vertex_descriptor a, vertex_descriptor b) { return comes_before(a, b); });
+  }
+
+  /// Does the first of the candidates that is allowed. Returns whether one was.
+  bool do_first_allowed(const std::vector<Candidate>& candidates, Collapse_statistics& stats)
+  {
     for(const Candidate& candidate : candidates) {
       if(!is_live_quad(candidate.quad))
         continue;
@@ -553,13 +584,14 @@ private:
            (was_convex ? is_convex(polygon, normal) : fan_turns_with(polygon, normal));
   }
 
-  /// Turns the edge of h (u -> v) to join hexagon corners k and k + 3: h's face becomes
-  /// corners k .. k + 3, the opposite face corners k + 3 .. k + 6.
+  /// Turns the edge of h (u -> v) to join hexagon corners k and k + 3 (mod 6): h's face
+  /// becomes corners k .. k + 3, the opposite face corners k + 3 .. k + 6. (k = 4 or 5
+  /// gives the diagonal of k = 1 or 2 with the two faces the other way round.)
   void rotate(halfedge_descriptor h, const std::array<halfedge_descriptor, 6>& hexagon, int k)
   {
     const halfedge_descriptor o = opposite(h, mesh_);
     const vertex_descriptor u = source(h, mesh_), v = target(h, mesh_);
-    const vertex_descriptor p = source(hexagon[k], mesh_), q = source(hexagon[k + 3], mesh_);
+    const vertex_descriptor p = source(hexagon[k], mesh_), q = source(hexagon[(k + 3) % 6], mesh_);
     auto link = [this](halfedge_descriptor diagonal, const halfedge_descriptor* sides) {
       const face_descriptor f = face(diagonal, mesh_);
       set_next(diagonal, sides[0], mesh_);
@@ -570,7 +602,7 @@ private:
         set_face(sides[i], f, mesh_);
       set_halfedge(f, diagonal, mesh_);
     };
-    const std::array<halfedge_descriptor, 6> from_k = {hexagon[k], hexagon[k + 1], hexagon[(k + 2) % 6],
+    const std::array<halfedge_descriptor, 6> from_k = {hexagon[k], hexagon[(k + 1) % 6], hexagon[(k + 2) % 6],
                                                        hexagon[(k + 3) % 6], hexagon[(k + 4) % 6],
                                                        hexagon[(k + 5) % 6]};
     if(halfedge(u, mesh_) == o)
@@ -723,7 +755,7 @@ private:
       if(e2 != opposite(o2, mesh_) || is_border(o2, mesh_) || is_border(o1, mesh_))
         continue;
       const face_descriptor f = face(o2, mesh_), g = face(o1, mesh_);
-      if(f == g || degree(f, mesh_) != 4 || degree(g, mesh_) != 4)
+      if(f == g || !is_quad(f) || !is_quad(g))
         continue;
       const vertex_descriptor a = target(e1, mesh_), b = target(e2, mesh_);
       const halfedge_descriptor a_x = next(e1, mesh_), x_b = prev(o2, mesh_);
@@ -810,6 +842,9 @@ private:
   std::vector<Vec3>& normals_;
   FaceIndexMap face_index_;
   std::vector<bool> removed_faces_; // by face index: faces are never created
+  // by face index, the degree test cached: a collapse replaces a corner of the faces
+  // around it, a rotation or a doublet removal makes quads of quads
+  std::vector<bool> is_quad_;
   std::vector<std::size_t> touched_in_pass_; // by face index: last pass that queued it
   // by face index: 1 + the number of walks before the face's last change was listed
   // (in changed_since_walk_), and the last walk that listed it to be tried
@@ -825,7 +860,6 @@ private:
   mutable std::vector<face_descriptor> faces_a_;
   std::vector<halfedge_descriptor> into_c_;
   std::vector<face_descriptor> nearby_quads_;
-  std::vector<std::pair<vertex_descriptor, face_descriptor>> nearby_by_corner_;
   std::vector<Candidate> nearby_candidates_;
   struct Unlinked // what a collapse (or a doublet removal) took out of the connectivity
   {
