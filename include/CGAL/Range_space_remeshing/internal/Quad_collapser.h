@@ -112,15 +112,8 @@ public:
       } else {
         collect_candidates(to_examine, candidates);
         to_examine.clear();
-        for(const Candidate& candidate : candidates) {
-          // earlier collapses of this pass may have removed or changed the quad
-          if(!is_live_quad(candidate.quad))
-            continue;
-          if(candidate.edge != null_halfedge())
-            try_rotation(candidate, stats);
-          else
-            try_collapse(candidate.quad, stats);
-        }
+        for(const Candidate& candidate : candidates)
+          try_candidate(candidate, stats);
       }
       std::sort(to_examine.begin(), to_examine.end(), [&](face_descriptor f, face_descriptor g) {
         return get(face_index_, f) < get(face_index_, g);
@@ -173,14 +166,20 @@ private:
       ++order;
     }
     std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
-      if(x.energy_decrease != y.energy_decrease)
-        return x.energy_decrease > y.energy_decrease;
-      // at equal decrease a collapse first: a rotation can take the valence-3 vertex a
-      // collapse needs, and leave two irregular vertices where the collapse left none
-      if((x.edge == null_halfedge()) != (y.edge == null_halfedge()))
-        return x.edge == null_halfedge();
+      if(has_priority(x, y) || has_priority(y, x))
+        return has_priority(x, y);
       return x.order < y.order || (x.order == y.order && x.rank_in_quad < y.rank_in_quad);
     });
+  }
+
+  /// Whether x goes before y whatever the tie-breaks: a larger decrease, and at equal
+  /// decrease a collapse first (a rotation can take the valence-3 vertex a collapse
+  /// needs, and leave two irregular vertices where the collapse left none).
+  static bool has_priority(const Candidate& x, const Candidate& y)
+  {
+    if(x.energy_decrease != y.energy_decrease)
+      return x.energy_decrease > y.energy_decrease;
+    return x.edge == null_halfedge() && y.edge != null_halfedge();
   }
 
   /// Ties between operations are broken by where the vertices are, not by vertex
@@ -275,23 +274,29 @@ private:
 
   Rotation best_rotation(halfedge_descriptor h) const
   {
-    const vertex_descriptor u = source(h, mesh_), v = target(h, mesh_);
-    const int before = valence_energy(valence(u), u) + valence_energy(valence(v), v);
-    const int after = valence_energy(valence(u) - 1, u) + valence_energy(valence(v) - 1, v);
+    const int loss = loss_of_old_ends(h);
     // A new end at its lowest valence or above gains at most 1 from its new edge, so
     // most edges (4-4 ones) cannot pay for a rotation: skip them before the hexagon.
     // (This passes over the rare inner vertex of valence 2, a doublet left in place.)
     Rotation best;
-    if(before - after + 2 <= 0 || !hexagon_around(h, best.hexagon))
+    if(loss + 2 <= 0 || !hexagon_around(h, best.hexagon))
       return best;
     for(int k : {1, 2}) {
-      const int decrease = before - after + gain_of_new_ends(best.hexagon, k);
+      const int decrease = loss + gain_of_new_ends(best.hexagon, k);
       if(best.k == 0 || decrease > best.energy_decrease) {
         best.k = k;
         best.energy_decrease = decrease;
       }
     }
     return best;
+  }
+
+  /// The decrease of the valence energy of the ends of h's edge when it is rotated away.
+  int loss_of_old_ends(halfedge_descriptor h) const
+  {
+    const vertex_descriptor u = source(h, mesh_), v = target(h, mesh_);
+    return valence_energy(valence(u), u) + valence_energy(valence(v), v) -
+           (valence_energy(valence(u) - 1, u) + valence_energy(valence(v) - 1, v));
   }
 
   /// The change of the valence energy of hexagon corners k and k + 3 when they are joined.
@@ -377,15 +382,12 @@ private:
         if(!still_in_quad(h, f) || !hexagon_around(h, hexagon))
           continue;
         const vertex_descriptor u = source(h, mesh_), v = target(h, mesh_);
-        const int loss_of_old_ends = valence_energy(valence(u), u) + valence_energy(valence(v), v) -
-                                     (valence_energy(valence(u) - 1, u) + valence_energy(valence(v) - 1, v));
+        const int loss = loss_of_old_ends(h);
         for(int k : {1, 2}) {
-          if(loss_of_old_ends + gain_of_new_ends(hexagon, k) != 0 || !rotation_keeps_manifold(h, hexagon, k))
+          if(loss + gain_of_new_ends(hexagon, k) != 0 || !rotation_keeps_manifold(h, hexagon, k))
             continue;
           const vertex_descriptor p = source(hexagon[k], mesh_), q = source(hexagon[k + 3], mesh_);
-          touching_ = false; // a rotation turned back changes nothing the next passes need
-          rotate(h, hexagon, k);
-          touching_ = true;
+          rotate_untracked(h, hexagon, k);
           // the geometric check last: most rotations make nothing possible. (The
           // hexagon's sides are the same halfedges, at the same corners, after it.)
           const std::vector<Candidate>& candidates = candidates_around({u, v, p, q});
@@ -401,9 +403,7 @@ private:
           // The hexagon around h now starts at p, where v is corner 6 - k.
           std::array<halfedge_descriptor, 6> back;
           hexagon_around(h, back);
-          touching_ = false;
-          rotate(h, back, 6 - k);
-          touching_ = true;
+          rotate_untracked(h, back, 6 - k);
         }
       }
     }
@@ -411,6 +411,15 @@ private:
     stats.collapsed_quads += tries.collapsed_quads;
     stats.rotated_edges += tries.rotated_edges;
     return kept;
+  }
+
+  /// A rotation that queues no face: the walk's tries, which a rotation back may undo,
+  /// change nothing the next passes need until one is kept.
+  void rotate_untracked(halfedge_descriptor h, const std::array<halfedge_descriptor, 6>& hexagon, int k)
+  {
+    touching_ = false;
+    rotate(h, hexagon, k);
+    touching_ = true;
   }
 
   /// The quads the next walk tries: all of them the first time, then those that the
@@ -489,10 +498,8 @@ private:
     collect_candidates(quads, candidates);
     if(candidates.size() > 1)
       std::sort(candidates.begin(), candidates.end(), [this](const Candidate& x, const Candidate& y) {
-        if(x.energy_decrease != y.energy_decrease)
-          return x.energy_decrease > y.energy_decrease;
-        if((x.edge == null_halfedge()) != (y.edge == null_halfedge()))
-          return x.edge == null_halfedge();
+        if(has_priority(x, y) || has_priority(y, x))
+          return has_priority(x, y);
         if(x.quad != y.quad)
           return comes_before_quad(x.quad, y.quad);
         return x.rank_in_quad < y.rank_in_quad;
@@ -520,13 +527,19 @@ private:
   /// Does the first of the candidates that is allowed. Returns whether one was.
   bool do_first_allowed(const std::vector<Candidate>& candidates, Collapse_statistics& stats)
   {
-    for(const Candidate& candidate : candidates) {
-      if(!is_live_quad(candidate.quad))
-        continue;
-      if(candidate.edge != null_halfedge() ? try_rotation(candidate, stats) : try_collapse(candidate.quad, stats))
+    for(const Candidate& candidate : candidates)
+      if(try_candidate(candidate, stats))
         return true;
-    }
     return false;
+  }
+
+  /// Does the candidate's collapse or rotation if it is still allowed (earlier
+  /// operations may have removed or changed its quad). Returns whether it did.
+  bool try_candidate(const Candidate& candidate, Collapse_statistics& stats)
+  {
+    if(!is_live_quad(candidate.quad))
+      return false;
+    return candidate.edge != null_halfedge() ? try_rotation(candidate, stats) : try_collapse(candidate.quad, stats);
   }
 
   /// The hexagon's corners are six distinct vertices, the new edge's ends are not
