@@ -210,22 +210,37 @@ void measure_dimensions(const std::string& name, Mesh input, std::size_t target,
     vertices = stats.output_vertices;
     return normals_ms + stats.time_total_ms;
   };
-  for(int d : {3, 6, 9}) {
-    std::size_t vertices = 0;
-    const double h = benchmark_support::cell_size_for(
+  // The three dimensions are timed in rounds, one run of each per round, so that a
+  // ratio compares runs made milliseconds apart. The benchmark machine's speed drifts:
+  // the median of the same series measured a few minutes apart differed by up to 1.7x,
+  // which three series one after the other would report as a cost of the dimension.
+  const int dimensions[3] = {3, 6, 9};
+  double h[3];
+  std::size_t vertices[3] = {0, 0, 0};
+  std::vector<double> times[3], per_vertex_ratio[3];
+  for(int k = 0; k < 3; ++k) {
+    h[k] = benchmark_support::cell_size_for(
         [&](double h) {
-          timed(h, d, vertices);
-          return vertices;
+          timed(h, dimensions[k], vertices[k]);
+          return vertices[k];
         },
         0.01 * diagonal, target);
-    std::vector<double> times;
-    timed(h, d, vertices); // warm-up
-    for(int r = 0; r < runs; ++r)
-      times.push_back(timed(h, d, vertices));
-    const double ms = median(times);
+    timed(h[k], dimensions[k], vertices[k]); // warm-up
+  }
+  for(int r = 0; r < runs; ++r) {
+    double per_vertex[3];
+    for(int k = 0; k < 3; ++k) {
+      times[k].push_back(timed(h[k], dimensions[k], vertices[k]));
+      per_vertex[k] = times[k].back() / double(vertices[k]);
+    }
+    for(int k = 0; k < 3; ++k)
+      per_vertex_ratio[k].push_back(per_vertex[k] / per_vertex[0]);
+  }
+  for(int k = 0; k < 3; ++k) {
+    const double ms = median(times[k]);
     char line[256];
-    std::snprintf(line, sizeof(line), "| %s | %d | %zu | %.2f | %.0f |", name.c_str(), d, vertices, ms,
-                  1e6 * ms / double(vertices));
+    std::snprintf(line, sizeof(line), "| %s | %d | %zu | %.2f | %.0f | %.2f |", name.c_str(), dimensions[k],
+                  vertices[k], ms, 1e6 * ms / double(vertices[k]), median(per_vertex_ratio[k]));
     std::cout << line << std::endl;
   }
 }
@@ -299,8 +314,9 @@ int main(int argc, char** argv)
                "normal, normal weight 0.5 bounding-box diagonals; D = 9: and colours generated from the "
                "position, colour weight 0.2 diagonals; at D = 6 and 9 the total includes the input's vertex "
                "normals, computed in one pass over the faces by `compute_vertex_normals()`):\n\n"
-            << "| mesh | D | output vertices | total ms | ns per output vertex |\n"
-            << "|---|---:|---:|---:|---:|\n";
+            << "| mesh | D | output vertices | total ms | ns per output vertex | per output vertex, "
+               "/ D = 3 (median of the rounds' ratios) |\n"
+            << "|---|---:|---:|---:|---:|---:|\n";
   for(const auto& [name, input, h, contour_ms] : duals)
     measure_dimensions(name, input, num_vertices(input) / 4, runs);
   return 0;

@@ -136,13 +136,13 @@ void test_kernels_and_graphs()
 }
 
 template <class F>
-bool throws_remeshing_error(F f)
+bool throws_remeshing_error(F f, const std::string& saying = "")
 {
   try {
     f();
   } catch(const RSR::Remeshing_error& e) {
     std::cout << "  expected error: " << e.what() << std::endl;
-    return true;
+    return std::string(e.what()).find(saying) != std::string::npos;
   }
   return false;
 }
@@ -229,8 +229,20 @@ void test_errors()
                   std::numeric_limits<double>::quiet_NaN()})
     CHECK(throws_remeshing_error([&] { RSR::primal_remesh(sphere, out, params::grid_spacing(h)); }));
   CHECK(throws_remeshing_error([&] { RSR::primal_remesh(sphere, out, params::grid_spacing(1e-12)); }));
+  // The output size is estimated before it is built: refused with the estimate
+  // whether the cap is small or the default 50 million (about 2e8 expected here; the
+  // scan estimates once its bound passes a million vertices, long before the cap).
+  const std::string refusal = "the output would have about";
   CHECK(throws_remeshing_error(
-      [&] { RSR::primal_remesh(sphere, out, params::grid_spacing(0.01).maximum_number(1000)); }));
+      [&] { RSR::primal_remesh(sphere, out, params::grid_spacing(0.01).maximum_number(1000)); }, refusal));
+  CHECK(throws_remeshing_error([&] { RSR::primal_remesh(sphere, out, params::grid_spacing(3e-4)); }, refusal));
+  // A cap above the estimate (7,396 for 7,378 vertices) that the scan's bound reaches
+  // late (after 6,338 vertices): the scan goes on after the estimate, to the same output.
+  Mesh uncapped, capped;
+  const auto uncapped_stats = RSR::primal_remesh(sphere, uncapped, params::grid_spacing(0.05));
+  RSR::primal_remesh(sphere, capped,
+                     params::grid_spacing(0.05).maximum_number(3 * uncapped_stats.intersection_vertices / 2));
+  CHECK(fingerprint(capped) == fingerprint(uncapped));
   auto nan_map = appended<4>(sphere, [](const Point& p, std::array<double, 4>& x) {
     x[3] = p.x() > 0.5 ? std::numeric_limits<double>::quiet_NaN() : 0.0;
   });

@@ -126,24 +126,16 @@ std::unique_ptr<Primal_complex> trace_primal_complex(const TriangleMesh& tm, Tra
     if(count_pieces)
       tracer.count_untraced_pieces();
 #if defined(CGAL_LINKED_WITH_TBB)
-    if constexpr(parallel)
+    if constexpr(parallel) {
       tracer.map_and_record_in_parallel();
-#endif
-    // Refuse before building anything when the output would exceed the cap (the
-    // estimate maps every vertex, which the scan needs anyway).
-    double expected = 0;
-    const double cap = double(tracer.maximum_number_of_vertices());
-    if(tracer.expected_number_of_vertices_exceeds(cap, expected))
-      throw Remeshing_error("the output would have about " + std::to_string(std::llround(expected)) +
-                            " vertices, more than the cap of " + std::to_string(std::llround(cap)) +
-                            ": the cell size is too small for this input");
-#if defined(CGAL_LINKED_WITH_TBB)
-    if constexpr(parallel)
+      tracer.refuse_too_large_output();
       tracer.scan_in_parallel();
-    else
+    } else
 #endif
-      for(auto f : faces(tm))
-        tracer.scan_face(f); // also checks that every face is a triangle
+    {
+      tracer.map_all_vertices();
+      tracer.scan_all_faces(); // refuses too large outputs; checks every face is a triangle
+    }
     stats.seeds = tracer.intersection_vertices().size();
     if(tracer.has_seen_border())
       stats.uncrossed_border_cycles = tracer.number_of_uncrossed_border_cycles();

@@ -58,6 +58,11 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 // mean an absurd cell size and are rejected before they could overflow.
 constexpr double maximum_lattice_coordinate = 1 << 29;
 
+// The sequential complete scan estimates the output size (a pass over all faces)
+// only once a bound of it reaches this many vertices: below, building them costs
+// less than the estimate would on every run.
+constexpr double vertices_built_before_estimate = 1 << 20;
+
 template <int D>
 struct Intersection_vertex
 {
@@ -140,21 +145,43 @@ public:
 
   // ---------------------------------------------------------------- seeding
   /// Finds every intersection vertex of the triangle `f` and queues it.
-  void scan_face(face_descriptor f)
+  void scan_face(face_descriptor f) { scan_triangle(load_face(f)); }
+
+  /// The complete scan on this thread: `scan_face()` over `faces(tm)`, after
+  /// `map_all_vertices()`. Refuses an output whose expected size
+  /// (`expected_number_of_vertices()`) exceeds the cap before it is built, without
+  /// the pass over all faces that this estimate takes on most runs: a bound of it,
+  /// summed during the scan, has to reach `vertices_built_before_estimate` (or the
+  /// cap, if lower) first. Only then is the estimate made, once; if it is above the
+  /// cap, at most about that many vertices were built for nothing.
+  void scan_all_faces()
   {
-    const std::uint32_t face_id = std::uint32_t(get(face_index_, f));
-    face_of_id_[face_id] = f;
-    const Triangle t = load(face_id);
-    // Most triangles lie in one lattice cell (equal ceilings at the three corners):
-    // no lattice level is crossed, so there is no intersection vertex to look for.
-    if(!(*t.c[0] == *t.c[1] && *t.c[1] == *t.c[2])) {
-      if(untraced_pieces_)
-        untraced_pieces_[face_id] += number_of_crossed_hyperplanes(t);
-      scan_crossed_levels(t, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
-        find_or_create(face_id, i, j, k, m, o, /*queue*/ true);
-      });
+    const double cap = double(maximum_vertices_);
+    const double check_at = (std::min)(cap, vertices_built_before_estimate);
+    double bound = 0;
+    bool checked = false;
+    for(face_descriptor f : faces(tm_)) {
+      const Triangle t = load_face(f);
+      if(!checked) {
+        bound += expected_vertices_bound(t);
+        if(1.01 * bound >= check_at) { // 1.01: room for rounding
+          checked = true;
+          refuse_if_expected_above(cap);
+        }
+      }
+      scan_triangle(t);
     }
-    create_border_crossings_of(face_id);
+  }
+
+  /// Throws the error that says the output would exceed `cap` if
+  /// `expected_number_of_vertices()` does.
+  void refuse_if_expected_above(double cap)
+  {
+    const double expected = expected_number_of_vertices();
+    if(expected > cap)
+      throw Remeshing_error("the output would have about " + std::to_string(std::llround(expected)) +
+                            " vertices, more than the cap of " + std::to_string(std::llround(cap)) +
+                            ": the cell size is too small for this input");
   }
 
   /// Creates the boundary vertices on the border edges of a face, if it has any.
@@ -163,6 +190,16 @@ public:
     for(int e = 0; e < 3; ++e)
       if(records_[face_id].neighbour[e] == border)
         border_crossings(face_id, e);
+  }
+
+  /// Before a complete scan, which maps every vertex anyway: maps them in the order of
+  /// `vertices(tm)`. The map then reads its property maps in their storage order; the
+  /// scan over the faces would read them at random (at n = 9, three arrays per vertex).
+  void map_all_vertices()
+  {
+    for(vertex_descriptor v : vertices(tm_))
+      map_in_place(v);
+    number_of_mapped_ = mapped_.size();
   }
 
 #if defined(CGAL_LINKED_WITH_TBB)
@@ -174,12 +211,8 @@ public:
     const std::vector<vertex_descriptor> all_vertices(vertices(tm_).begin(), vertices(tm_).end());
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, all_vertices.size(), 2048),
                       [&](const tbb::blocked_range<std::size_t>& range) {
-                        for(std::size_t i = range.begin(); i != range.end(); ++i) {
-                          const std::uint32_t id = std::uint32_t(get(vertex_index_, all_vertices[i]));
-                          vertex_of_id_[id] = all_vertices[i];
-                          compute_range_coordinates(id);
-                          mapped_[id] = 1;
-                        }
+                        for(std::size_t i = range.begin(); i != range.end(); ++i)
+                          map_in_place(all_vertices[i]);
                       });
     number_of_mapped_ = all_vertices.size();
 
@@ -255,9 +288,7 @@ public:
   {
     double expected = 0;
     for(face_descriptor f : faces(tm_)) {
-      const std::uint32_t face_id = std::uint32_t(get(face_index_, f));
-      face_of_id_[face_id] = f;
-      const Triangle t = load(face_id);
+      const Triangle t = load_face(f);
       const Point_d &a = *t.p[0], &b = *t.p[1], &c = *t.p[2];
       for(int i = 0; i < D; ++i)
         for(int j = i + 1; j < D; ++j)
@@ -266,32 +297,16 @@ public:
     return expected;
   }
 
-  /// Whether `expected_number_of_vertices()` exceeds `cap` (then stored in
-  /// `expected`), decided in O(D) per face instead of O(D^2) where it cannot: with
-  /// B = b - a, C = c - a, each term |B_i C_j - B_j C_i| <= |B_i| |C_j| + |B_j| |C_i|,
-  /// so the sum over i < j is at most (sum |B_i|) (sum |C_j|). The estimate itself is
-  /// computed only when this bound, with a wide margin for rounding, reaches the cap.
-  /// Maps the vertices in the same order as `expected_number_of_vertices()`.
-  bool expected_number_of_vertices_exceeds(double cap, double& expected)
+  /// Refuses an output whose `expected_number_of_vertices()` exceeds the cap, before
+  /// it is built. The estimate is made only when the sum of
+  /// `expected_vertices_bound()`, with a wide margin for rounding, reaches the cap.
+  void refuse_too_large_output()
   {
     double bound = 0;
-    for(face_descriptor f : faces(tm_)) {
-      const std::uint32_t face_id = std::uint32_t(get(face_index_, f));
-      face_of_id_[face_id] = f;
-      const Triangle t = load(face_id);
-      const Point_d &a = *t.p[0], &b = *t.p[1], &c = *t.p[2];
-      double sum_b = 0, sum_c = 0;
-      for(int q = 0; q < D; ++q) {
-        sum_b += std::abs(b[q] - a[q]);
-        sum_c += std::abs(c[q] - a[q]);
-      }
-      bound += 0.5 * sum_b * sum_c;
-    }
-    expected = bound;
-    if(!(1.01 * bound >= cap))
-      return false;
-    expected = expected_number_of_vertices();
-    return expected > cap;
+    for(face_descriptor f : faces(tm_))
+      bound += expected_vertices_bound(load_face(f));
+    if(1.01 * bound >= double(maximum_vertices_))
+      refuse_if_expected_above(double(maximum_vertices_));
   }
 
   /// Scans the faces reachable from `seed` across edges, nearest first, until one
@@ -447,6 +462,15 @@ private:
     ++number_of_mapped_;
   }
 
+  /// Maps v, writing only its own entries (any thread).
+  void map_in_place(vertex_descriptor v)
+  {
+    const std::uint32_t id = std::uint32_t(get(vertex_index_, v));
+    vertex_of_id_[id] = v;
+    compute_range_coordinates(id);
+    mapped_[id] = 1;
+  }
+
   /// f of the vertex, in cell units, and its ceilings: writes only its own entry.
   void compute_range_coordinates(std::uint32_t id)
   {
@@ -531,6 +555,42 @@ private:
     if(source(h[0], tm_) == source(h[1], tm_) || source(h[1], tm_) == source(h[2], tm_) ||
        source(h[2], tm_) == source(h[0], tm_))
       throw Remeshing_error("the input has a face with a repeated vertex (face " + std::to_string(face_id) + ")");
+  }
+
+  /// An upper bound of the face's term of `expected_number_of_vertices()`, in O(D)
+  /// instead of O(D^2): with B = b - a, C = c - a, each term |B_i C_j - B_j C_i| <=
+  /// |B_i| |C_j| + |B_j| |C_i|, so the sum over i < j is at most (sum |B_i|) (sum |C_j|).
+  static double expected_vertices_bound(const Triangle& t)
+  {
+    const Point_d &a = *t.p[0], &b = *t.p[1], &c = *t.p[2];
+    double sum_b = 0, sum_c = 0;
+    for(int q = 0; q < D; ++q) {
+      sum_b += std::abs(b[q] - a[q]);
+      sum_c += std::abs(c[q] - a[q]);
+    }
+    return 0.5 * sum_b * sum_c;
+  }
+
+  Triangle load_face(face_descriptor f)
+  {
+    const std::uint32_t face_id = std::uint32_t(get(face_index_, f));
+    face_of_id_[face_id] = f;
+    return load(face_id);
+  }
+
+  /// Finds every intersection vertex of the triangle and queues it.
+  void scan_triangle(const Triangle& t)
+  {
+    // Most triangles lie in one lattice cell (equal ceilings at the three corners):
+    // no lattice level is crossed, so there is no intersection vertex to look for.
+    if(!(*t.c[0] == *t.c[1] && *t.c[1] == *t.c[2])) {
+      if(untraced_pieces_)
+        untraced_pieces_[t.face_id] += number_of_crossed_hyperplanes(t);
+      scan_crossed_levels(t, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
+        find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
+      });
+    }
+    create_border_crossings_of(t.face_id);
   }
 
   Triangle load(std::uint32_t face_id)
