@@ -192,6 +192,12 @@ void check_input(const std::string& name, const Mesh& input, double relative_cel
   CHECK(std::abs(volume_after / volume_before - 1) < 0.005);
   CHECK(std::abs(diagonal_after / diagonal_before - 1) < 0.005);
   CHECK(edge_length_spread(relaxed) < edge_length_spread(collapsed));
+  // and keeps the vertices on the surface: each goes back onto its tangent planes
+  // weighted by closeness, which follow a curved surface where the vertex has slid.
+  // Weighting them alike, relaxed / collapsed RMS was 1.16 on the sphere, 1.07 on the
+  // torus and 1.01 to 1.10 on the others; weighted, 0.87 to 0.99. (The RMS of the
+  // same mesh varies by about 0.5 % from run to run: hence the 2 %.)
+  CHECK(d_relaxed.rms < 1.02 * d_collapsed.rms);
 }
 
 /// |A - sum values_k v_k v_k^T| relative to A's largest entry, and |V^T V - I|.

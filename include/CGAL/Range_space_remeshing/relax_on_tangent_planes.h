@@ -35,7 +35,14 @@ and normal by the average of its neighbours' (the normal renormalised), which sp
 the vertices evenly but shrinks and smooths, then (b) moves it back to the nearest
 minimiser of the squared distances to its tangent planes, along the directions those
 planes constrain and no other (directions whose eigenvalue in the planes' quadric is
-below a tenth of the largest are free). This undoes the shrinking: in a smooth region
+below a tenth of the largest are free). The planes are weighted by how close their
+points are to the averaged position (inverse square of the squared distance, softened,
+and at least a tenth of the largest weight): a tangent plane strays from a curved
+surface with the square of the distance to its point, so where the vertex has slid
+towards one side of its planes, those on that side say where the surface is. Weighted
+alike, they left the relaxed vertices off the surface (RMS distance to the input 3.6e-4
+instead of 2.6e-4 on refined_elephant, \f$\mathbb{R}^6\f$, 11k quads; worse than
+before the relaxation). This undoes the shrinking: in a smooth region
 the vertex moves along the normal only, as the paper's projection on the line
 \f$v' + \lambda n'\f$ does, and slides freely on the surface; on a crease, where the
 planes of both sides meet, it goes back onto the crease line, and at a corner onto the
@@ -188,7 +195,7 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
         next_normal[i] = normal[i];
         continue;
       }
-      next_position[i] = projection[i](internal::clamped_to_points_box(p, planes));
+      next_position[i] = projection[i].fit_nearest_planes(internal::clamped_to_points_box(p, planes), planes);
       next_normal[i] = m;
     }
     position.swap(next_position);

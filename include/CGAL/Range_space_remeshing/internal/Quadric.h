@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -298,6 +299,64 @@ public:
   }
 
   int constrained_directions() const { return constrained_; }
+
+  /// Moves x along the same constrained directions, to the least-squares fit of the
+  /// planes weighted by closeness to x, where the quadric weighs them all alike. A
+  /// tangent plane strays from a curved surface by about the curvature times the
+  /// square of the distance to its point, so a plane whose point is at distance d
+  /// gets weight 1 / (d^2 + s^2 / 20)^2 (inverse-variance weighting of that error;
+  /// s^2 the planes' mean squared distance, so that no plane takes all the weight).
+  /// Weights are relative to the largest, and at least a tenth: the system then
+  /// stays as well-conditioned as the truncation made the quadric's. A corner (three
+  /// directions) is the quadric's point, whatever the weights.
+  template <class PlaneRange>
+  Vec3 fit_nearest_planes(const Vec3& x, const PlaneRange& planes) const
+  {
+    if(constrained_ == 0 || constrained_ == 3)
+      return (*this)(x);
+    double sum_d2 = 0, least_d2 = std::numeric_limits<double>::infinity();
+    std::size_t count = 0;
+    for(const auto& plane : planes) {
+      const Vec3 d = difference(plane.first, x);
+      sum_d2 += dot(d, d);
+      least_d2 = (std::min)(least_d2, dot(d, d));
+      ++count;
+    }
+    const double softening = sum_d2 / double(count) / 20;
+    auto weight = [&](double d2) { return 1 / ((d2 + softening) * (d2 + softening)); };
+    const double largest = weight(least_d2);
+    // normal equations in the coordinates t of x + t_0 e_0 + t_1 e_1
+    double m[2][2] = {{0, 0}, {0, 0}}, rhs[2] = {0, 0};
+    for(const auto& plane : planes) {
+      const Vec3 n = normalized(plane.second);
+      const Vec3 d = difference(plane.first, x);
+      const double w = (std::max)(weight(dot(d, d)) / largest, 0.1);
+      const double a[2] = {dot(n, directions_[0]), constrained_ > 1 ? dot(n, directions_[1]) : 0.};
+      const double offset = dot(n, d);
+      for(int r = 0; r < constrained_; ++r) {
+        rhs[r] += w * a[r] * offset;
+        for(int c = 0; c < constrained_; ++c)
+          m[r][c] += w * a[r] * a[c];
+      }
+    }
+    double t[2] = {0, 0};
+    if(constrained_ == 1) {
+      if(!(m[0][0] > 0))
+        return (*this)(x);
+      t[0] = rhs[0] / m[0][0];
+    } else {
+      const double det = m[0][0] * m[1][1] - m[0][1] * m[1][0];
+      if(!(det > 1e-12 * m[0][0] * m[1][1]) || !std::isfinite(det))
+        return (*this)(x); // no planes with a normal in one of the directions
+      t[0] = (rhs[0] * m[1][1] - m[0][1] * rhs[1]) / det;
+      t[1] = (m[0][0] * rhs[1] - m[1][0] * rhs[0]) / det;
+    }
+    Vec3 y = x;
+    for(int k = 0; k < constrained_; ++k)
+      for(int i = 0; i < 3; ++i)
+        y[i] += t[k] * directions_[k][i];
+    return y;
+  }
 
   Vec3 operator()(const Vec3& x) const
   {
