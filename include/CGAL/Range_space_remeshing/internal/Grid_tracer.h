@@ -140,7 +140,6 @@ public:
   /// whether an input border was met (every face is recorded in a complete scan)
   bool has_seen_border() const { return seen_border_; }
   std::size_t number_of_tracing_steps() const { return tracing_steps_; }
-  std::size_t maximum_number_of_vertices() const { return maximum_vertices_; }
   FaceIndexMap face_index_map() const { return face_index_; }
 
   // ---------------------------------------------------------------- seeding

@@ -323,14 +323,17 @@ public:
       ++count;
     }
     const double softening = sum_d2 / double(count) / 20;
-    auto weight = [&](double d2) { return 1 / ((d2 + softening) * (d2 + softening)); };
-    const double largest = weight(least_d2);
+    // the weight over the largest, as a ratio that can neither overflow nor underflow
+    auto relative_weight = [&](double d2) {
+      const double r = (least_d2 + softening) / (d2 + softening);
+      return r * r;
+    };
     // normal equations in the coordinates t of x + t_0 e_0 + t_1 e_1
     double m[2][2] = {{0, 0}, {0, 0}}, rhs[2] = {0, 0};
     for(const auto& plane : planes) {
       const Vec3 n = normalized(plane.second);
       const Vec3 d = difference(plane.first, x);
-      const double w = (std::max)(weight(dot(d, d)) / largest, 0.1);
+      const double w = (std::max)(relative_weight(dot(d, d)), 0.1);
       const double a[2] = {dot(n, directions_[0]), constrained_ > 1 ? dot(n, directions_[1]) : 0.};
       const double offset = dot(n, d);
       for(int r = 0; r < constrained_; ++r) {
