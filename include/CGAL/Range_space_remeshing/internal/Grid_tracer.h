@@ -163,7 +163,7 @@ public:
       const Triangle t = load_face(f);
       if(!checked) {
         bound += expected_vertices_bound(t);
-        if(1.01 * bound >= check_at) { // 1.01: room for rounding
+        if(bound_may_reach(bound, check_at)) {
           checked = true;
           refuse_if_expected_above(cap);
         }
@@ -204,7 +204,7 @@ public:
 #if defined(CGAL_LINKED_WITH_TBB)
   /// The first half of the complete scan on all threads: maps every vertex and
   /// records every face, each task writing only the entries of its own elements.
-  /// Afterwards `expected_number_of_vertices_exceeds()` maps nothing.
+  /// Afterwards `refuse_too_large_output()` maps nothing.
   void map_and_record_in_parallel()
   {
     const std::vector<vertex_descriptor> all_vertices(vertices(tm_).begin(), vertices(tm_).end());
@@ -298,15 +298,19 @@ public:
 
   /// Refuses an output whose `expected_number_of_vertices()` exceeds the cap, before
   /// it is built. The estimate is made only when the sum of
-  /// `expected_vertices_bound()`, with a wide margin for rounding, reaches the cap.
+  /// `expected_vertices_bound()` may reach the cap.
   void refuse_too_large_output()
   {
     double bound = 0;
     for(face_descriptor f : faces(tm_))
       bound += expected_vertices_bound(load_face(f));
-    if(1.01 * bound >= double(maximum_vertices_))
+    if(bound_may_reach(bound, double(maximum_vertices_)))
       refuse_if_expected_above(double(maximum_vertices_));
   }
+
+  /// Whether a sum of `expected_vertices_bound()` may reach `level`, with a wide
+  /// margin for the rounding of the sum and of the estimate.
+  static bool bound_may_reach(double bound, double level) { return 1.01 * bound >= level; }
 
   /// Scans the faces reachable from `seed` across edges, nearest first, until one
   /// holding an intersection vertex is found. Returns false if there is none.
