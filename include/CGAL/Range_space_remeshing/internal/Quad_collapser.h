@@ -139,10 +139,6 @@ private:
   }
   Vec3 position(vertex_descriptor v) const { return to_vec3(get(vpm_, v)); }
   static halfedge_descriptor null_halfedge() { return GT::null_halfedge(); }
-  int valence_energy(int valence, vertex_descriptor v) const
-  {
-    return Corners::energy(valence, regular_valence(v));
-  }
 
   /// The quads of `quads` with a collapse that lowers the valence energy, best first.
   void collect_candidates(const std::vector<face_descriptor>& quads, std::vector<Candidate>& candidates)
@@ -246,21 +242,22 @@ private:
     std::array<int, 4> valence, regular;
 
     static int energy(int valence, int regular) { return (valence - regular) * (valence - regular); }
+    /// Decrease of a vertex's energy when it loses one edge.
+    static int edge_loss_decrease(int valence, int regular)
+    {
+      return energy(valence, regular) - energy(valence - 1, regular);
+    }
     int energy(int i) const { return energy(valence[i], regular[i]); }
+    int edge_loss_decrease(int i) const { return edge_loss_decrease(valence[i], regular[i]); }
     /// Decrease of the energy of the four corners when corner i + 2 is merged into i.
     int collapse_decrease(int i) const
     {
       const int a = i, b = (i + 1) % 4, c = (i + 2) % 4, d = (i + 3) % 4;
-      return energy(a) + energy(b) + energy(c) + energy(d) -
-             (energy(valence[a] + valence[c] - 2, regular[a]) + energy(valence[b] - 1, regular[b]) +
-              energy(valence[d] - 1, regular[d]));
+      return energy(a) + energy(c) - energy(valence[a] + valence[c] - 2, regular[a]) + edge_loss_decrease(b) +
+             edge_loss_decrease(d);
     }
     /// Decrease of the energy of side i's ends when the side is rotated away.
-    int loss_of_side_ends(int i) const
-    {
-      const int u = i, v = (i + 1) % 4;
-      return energy(u) + energy(v) - (energy(valence[u] - 1, regular[u]) + energy(valence[v] - 1, regular[v]));
-    }
+    int loss_of_side_ends(int i) const { return edge_loss_decrease(i) + edge_loss_decrease((i + 1) % 4); }
   };
 
   Corners corners_from(halfedge_descriptor h0) const
@@ -329,16 +326,16 @@ private:
   int loss_of_old_ends(halfedge_descriptor h) const
   {
     const vertex_descriptor u = source(h, mesh_), v = target(h, mesh_);
-    return valence_energy(valence(u), u) + valence_energy(valence(v), v) -
-           (valence_energy(valence(u) - 1, u) + valence_energy(valence(v) - 1, v));
+    return Corners::edge_loss_decrease(valence(u), regular_valence(u)) +
+           Corners::edge_loss_decrease(valence(v), regular_valence(v));
   }
 
   /// The change of the valence energy of hexagon corners k and k + 3 when they are joined.
   int gain_of_new_ends(const std::array<halfedge_descriptor, 6>& hexagon, int k) const
   {
     const vertex_descriptor p = source(hexagon[k], mesh_), q = source(hexagon[k + 3], mesh_);
-    return valence_energy(valence(p), p) + valence_energy(valence(q), q) -
-           (valence_energy(valence(p) + 1, p) + valence_energy(valence(q) + 1, q));
+    return -(Corners::edge_loss_decrease(valence(p) + 1, regular_valence(p)) +
+             Corners::edge_loss_decrease(valence(q) + 1, regular_valence(q)));
   }
 
   /// Rotates the candidate's edge if that still lowers the energy (earlier operations
