@@ -11,6 +11,9 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/properties_Polyhedron_3.h>
 
+#include <CGAL/Range_space_remeshing/internal/Lazily_zeroed_array.h>
+
+#include <cstdint>
 #include <limits>
 
 using namespace test;
@@ -220,6 +223,42 @@ void test_determinism_and_seeding()
   CHECK(fingerprint(shifted) != fingerprint(out));
 }
 
+/// The tracer's arrays by input vertex or face (internal/Lazily_zeroed_array.h): small
+/// ones come from calloc / malloc, large ones (4 MB and more) are mapped pages; both
+/// must read zero until written, hold what is written, and move.
+void test_lazily_zeroed_arrays()
+{
+  using RSR::internal::Lazily_zeroed_array;
+  for(std::size_t n : {std::size_t(0), std::size_t(1000), std::size_t(3) << 20, std::size_t(5) << 20}) {
+    Lazily_zeroed_array<std::uint32_t> a(n);
+    CHECK_EQ(a.size(), n);
+    bool all_zero = true, all_kept = true;
+    for(std::size_t i = 0; i < n; i += 4093)
+      all_zero = all_zero && a[i] == 0;
+    for(std::size_t i = 0; i < n; i += 4093)
+      a[i] = std::uint32_t(i + 1);
+    Lazily_zeroed_array<std::uint32_t> b;
+    b = std::move(a);
+    for(std::size_t i = 0; i < n; i += 4093)
+      all_kept = all_kept && b[i] == std::uint32_t(i + 1);
+    CHECK(all_zero);
+    CHECK(all_kept);
+  }
+  // a remesh whose tracer arrays are mapped pages (327,680 faces: 7.9 MB of records):
+  // the seeded traversal gives the complete scan's remesh, and repeats it exactly
+  const Mesh finest = make_sphere(1.0, 7);
+  Mesh complete, again, seeded;
+  remesh_and_check(finest, complete, params::grid_spacing(0.2));
+  remesh_and_check(finest, again, params::grid_spacing(0.2));
+  const auto stats = remesh_and_check(finest, seeded,
+                                      params::grid_spacing(0.2).seeding_method(RSR::Seeding_method::SEEDED));
+  CHECK(fingerprint(complete) == fingerprint(again));
+  CHECK_EQ(num_vertices(seeded), num_vertices(complete));
+  CHECK_EQ(num_faces(seeded), num_faces(complete));
+  CHECK_EQ(euler_characteristic(seeded), 2L);
+  CHECK(stats.mapped_vertices * 3 < num_vertices(finest));
+}
+
 void test_errors()
 {
   const Mesh sphere = make_sphere(1.0, 2);
@@ -351,6 +390,7 @@ int main()
   test_dimension<3>(make_torus(1.0, 0.4, 90, 45));
   test_kernels_and_graphs();
   test_determinism_and_seeding();
+  test_lazily_zeroed_arrays();
   test_errors();
 #if defined(CGAL_LINKED_WITH_TBB)
   test_parallel_scan();

@@ -24,6 +24,7 @@
 // (a corner: no arc), since a polygon mesh cannot have a hole of two edges.
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/internal/Lazily_zeroed_array.h>
 #include <CGAL/Range_space_remeshing/internal/Perturbed_predicates.h>
 #include <CGAL/Range_space_remeshing/internal/Vertex_table.h>
 
@@ -125,11 +126,13 @@ public:
               std::size_t maximum_vertices, const Traits& traits)
     : tm_(tm), range_map_(range_map), face_index_(face_index), vertex_index_(vertex_index),
       origin_(origin), cell_size_(cell_size), maximum_vertices_(maximum_vertices),
-      predicates_(traits), mapped_(num_vertices(tm), 0),
-      mapped_vertices_(new Mapped_vertex[num_vertices(tm)]),
-      vertex_of_id_(num_vertices(tm)), records_(new Face_record[num_faces(tm)]),
-      recorded_(num_faces(tm), 0), face_of_id_(num_faces(tm)),
-      table_(num_faces(tm) / 8) // typical outputs have a few times fewer vertices than faces
+      predicates_(traits), mapped_(num_vertices(tm)),
+      mapped_vertices_(num_vertices(tm)),
+      vertex_of_id_(num_vertices(tm)), records_(num_faces(tm)),
+      recorded_(num_faces(tm)), face_of_id_(num_faces(tm)),
+      // typical outputs have a few times fewer vertices than the input has faces; the
+      // bound keeps a seeded run on a huge input from clearing a huge table (it grows)
+      table_((std::min)(std::size_t(num_faces(tm)) / 8, std::size_t(1) << 16))
   {}
 
   // ---------------------------------------------------------------- results
@@ -317,7 +320,7 @@ public:
   bool seed_from(face_descriptor seed)
   {
     if(seed_marks_.empty())
-      seed_marks_.assign(num_faces(tm_), 0);
+      seed_marks_ = Zeroed_array<std::uint8_t>(num_faces(tm_));
     const std::uint32_t seed_id = std::uint32_t(get(face_index_, seed));
     face_of_id_[seed_id] = seed;
     std::deque<std::uint32_t> faces_to_scan(1, seed_id);
@@ -408,7 +411,7 @@ private:
   void count_border_cycles_of(const std::vector<std::uint32_t>& faces_of_component)
   {
     if(walked_border_.empty())
-      walked_border_.assign(3 * num_faces(tm_), 0); // once: by border_key()
+      walked_border_ = Zeroed_array<std::uint8_t>(3 * num_faces(tm_)); // once: by border_key()
     for(std::uint32_t f : faces_of_component)
       for(int e = 0; e < 3; ++e) {
         if(records_[f].neighbour[e] != border || walked_border_[border_key({f, e})])
@@ -1399,32 +1402,35 @@ private:
   std::size_t maximum_vertices_;
   Predicates predicates_;
 
-  std::vector<std::uint8_t> mapped_;
+  // The arrays by input vertex or face are zeroed lazily, or not at all where each
+  // entry is written before it is read: a seeded run touches only a fraction of them
+  // (see Lazily_zeroed_array.h).
+  Zeroed_array<std::uint8_t> mapped_;
   // u and its ceilings side by side: the tracer reads both for every corner
   struct Mapped_vertex
   {
     Point_d u;
     Levels ceiling; // the first lattice level above each coordinate (ties: equal)
   };
-  std::unique_ptr<Mapped_vertex[]> mapped_vertices_; // uninitialised: filled on first use
+  Uninitialised_array<Mapped_vertex> mapped_vertices_; // filled on first use
   std::size_t number_of_mapped_ = 0;
-  std::vector<vertex_descriptor> vertex_of_id_;
-  std::unique_ptr<Face_record[]> records_; // left uninitialised: filled on first use only
-  std::vector<std::uint8_t> recorded_;
+  Uninitialised_array<vertex_descriptor> vertex_of_id_; // an entry is written before it is read
+  Uninitialised_array<Face_record> records_; // filled on first use only
+  Zeroed_array<std::uint8_t> recorded_;
   std::size_t number_of_visited_faces_ = 0;
   bool seen_border_ = false;
   std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> border_crossings_; // by border_key()
   std::size_t number_of_boundary_vertices_ = 0;
   std::size_t number_of_corners_ = 0;
-  std::vector<std::uint8_t> seed_marks_;
-  std::vector<std::uint8_t> walked_border_; // by border_key(), for empty components
+  Zeroed_array<std::uint8_t> seed_marks_;
+  Zeroed_array<std::uint8_t> walked_border_; // by border_key(), for empty components
   std::size_t border_cycles_of_empty_components_ = 0;
   std::size_t tracing_steps_ = 0;
   std::vector<std::int32_t> untraced_piece_counts_; // see count_untraced_pieces()
   std::int32_t* untraced_pieces_ = nullptr;         // its data, or null: not counting
 
   std::vector<Vertex> vertices_;
-  std::vector<face_descriptor> face_of_id_;
+  Uninitialised_array<face_descriptor> face_of_id_; // an entry is written before it is read
   std::vector<std::uint32_t> all_face_ids_; // the parallel scan's order: faces(tm), by index
   Vertex_table table_;
   std::deque<std::uint32_t> queue_;

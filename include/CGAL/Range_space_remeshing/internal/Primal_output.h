@@ -23,9 +23,13 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <CGAL/Range_space_remeshing/Lazy_vertex_normal_map.h>
+#include <CGAL/Range_space_remeshing/internal/Lazily_zeroed_array.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 namespace CGAL {
@@ -63,23 +67,25 @@ public:
   void compute_all()
   {
     allocate();
-    compute_vertex_normals(tm_, boost::make_iterator_property_map(normals_.begin(), vertex_index_),
+    compute_vertex_normals(tm_, boost::make_iterator_property_map(normals_.data(), vertex_index_),
                            Normal_weighting::AREA, vpm_);
-    std::fill(known_.begin(), known_.end(), 1);
+    std::fill(known_.begin(), known_.end(), std::uint8_t(1));
   }
 
 private:
+  // lazily: a seeded run on a huge input asks for the normals of a few of its vertices
+  // (see Lazily_zeroed_array.h); a normal is written before it is read (known_)
   void allocate()
   {
-    normals_.assign(num_vertices(tm_), Vec3{{0, 0, 0}});
-    known_.assign(num_vertices(tm_), 0);
+    normals_ = Uninitialised_array<std::array<double, 3>>(num_vertices(tm_));
+    known_ = Zeroed_array<std::uint8_t>(num_vertices(tm_));
   }
 
   const TriangleMesh& tm_;
   VPM vpm_;
   Lazy_vertex_normal_map<TriangleMesh, VPM> normal_map_; // area-weighted: what the normal maps use
-  std::vector<std::array<double, 3>> normals_;
-  std::vector<std::uint8_t> known_;
+  Uninitialised_array<std::array<double, 3>> normals_;
+  Zeroed_array<std::uint8_t> known_;
   VertexIndexMap vertex_index_;
 };
 
