@@ -224,12 +224,12 @@ void test_determinism_and_seeding()
 }
 
 /// The tracer's arrays by input vertex or face (internal/Lazily_zeroed_array.h): small
-/// ones come from calloc / malloc, large ones (4 MB and more) are mapped pages; both
+/// ones come from calloc / malloc, large ones (32 MB and more) are mapped pages; both
 /// must read zero until written, hold what is written, and move.
 void test_lazily_zeroed_arrays()
 {
   using RSR::internal::Lazily_zeroed_array;
-  for(std::size_t n : {std::size_t(0), std::size_t(1000), std::size_t(3) << 20, std::size_t(5) << 20}) {
+  for(std::size_t n : {std::size_t(0), std::size_t(1000), std::size_t(3) << 20, std::size_t(10) << 20}) {
     Lazily_zeroed_array<std::uint32_t> a(n);
     CHECK_EQ(a.size(), n);
     bool all_zero = true, all_kept = true;
@@ -244,8 +244,8 @@ void test_lazily_zeroed_arrays()
     CHECK(all_zero);
     CHECK(all_kept);
   }
-  // a remesh whose tracer arrays are mapped pages (327,680 faces: 7.9 MB of records):
-  // the seeded traversal gives the complete scan's remesh, and repeats it exactly
+  // on a large input (327,680 faces) the seeded traversal gives the complete scan's
+  // remesh, and the complete scan repeats itself exactly
   const Mesh finest = make_sphere(1.0, 7);
   Mesh complete, again, seeded;
   remesh_and_check(finest, complete, params::grid_spacing(0.2));

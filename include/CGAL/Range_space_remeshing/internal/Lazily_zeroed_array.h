@@ -14,7 +14,8 @@
 // million faces are visited, and they touch nearly every 4 KB page of the face
 // records: 61,000 page faults, about 100 ms of a 360 ms run). Large arrays are
 // therefore mapped with transparent huge pages where Linux offers them (2 MB, zeroed
-// by the kernel at about memset speed: 260 ms for the same run).
+// by the kernel at about memset speed: 260 ms for the same run). Smaller ones stay
+// with malloc / calloc.
 
 #include <cstddef>
 #include <cstdlib>
@@ -37,8 +38,10 @@ template <class T, bool zeroed = true>
 class Lazily_zeroed_array
 {
   static_assert(std::is_trivially_copyable<T>::value, "Lazily_zeroed_array: T must be trivially copyable");
-  // below this, malloc or calloc: a huge page would zero 2 MB for a small mesh's run
-  static constexpr std::size_t huge_page = std::size_t(2) << 20, mapped_from = 2 * huge_page;
+  // Below this, malloc or calloc. glibc maps blocks above its own threshold (at most
+  // 32 MB) afresh on every call, but serves smaller ones from memory freed by the last
+  // run, which repeated runs (an animation, a benchmark) then find already in place.
+  static constexpr std::size_t huge_page = std::size_t(2) << 20, mapped_from = std::size_t(32) << 20;
 
   struct Release
   {
