@@ -527,8 +527,11 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     color_sources.clear();
     for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, primal), primal)) {
       planes.emplace_back(point_of[get(vertex_index, v)], normal_of[get(vertex_index, v)]);
-      color_sources.emplace_back(v, 1. / double(degree(f, primal)));
+      if constexpr(wants_colors)
+        color_sources.emplace_back(v, 0.);
     }
+    for(auto& source : color_sources) // equal weights: the face's mean colour
+      source.second = 1. / double(color_sources.size());
     const auto placed = internal::place_dual_vertex(planes, placement);
     dual_of_face[get(face_index, f)] = add_dual_vertex(placed.first, placed.second);
   }
