@@ -243,6 +243,7 @@ void test_lazily_zeroed_arrays()
       all_kept = all_kept && b[i] == std::uint32_t(i + 1);
     CHECK(all_zero);
     CHECK(all_kept);
+    CHECK(a.empty() && b.size() == n);
   }
   // on a large input (327,680 faces) the seeded traversal gives the complete scan's
   // remesh, and the complete scan repeats itself exactly

@@ -22,6 +22,7 @@
 #include <memory>
 #include <new>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 #if defined(__linux__)
@@ -81,6 +82,19 @@ public:
     if(p == nullptr)
       throw std::bad_alloc();
     data_ = std::unique_ptr<T, Release>(static_cast<T*>(p), Release{});
+  }
+
+  Lazily_zeroed_array(Lazily_zeroed_array&& other) noexcept
+    : data_(std::move(other.data_)), size_(other.size_)
+  {
+    other.size_ = 0;
+  }
+  Lazily_zeroed_array& operator=(Lazily_zeroed_array&& other) noexcept
+  {
+    data_ = std::move(other.data_);
+    size_ = other.size_;
+    other.size_ = 0;
+    return *this;
   }
 
   T& operator[](std::size_t i) { return data_.get()[i]; }
