@@ -245,8 +245,10 @@ void test_lazily_zeroed_arrays()
     CHECK(all_kept);
     CHECK(a.empty() && b.size() == n);
   }
-  // on a large input (327,680 faces) the seeded traversal gives the complete scan's
-  // remesh, and the complete scan repeats itself exactly
+  // On a large input (327,680 faces, 7.9 MB of face records) the seeded traversal gives
+  // the complete scan's remesh. The second complete scan gets the memory the first one
+  // freed, not fresh pages: it repeats itself exactly only if no entry of the arrays
+  // left uninitialised is read before it is written.
   const Mesh finest = make_sphere(1.0, 7);
   Mesh complete, again, seeded;
   remesh_and_check(finest, complete, params::grid_spacing(0.2));

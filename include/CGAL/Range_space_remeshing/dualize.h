@@ -528,10 +528,11 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, primal), primal)) {
       planes.emplace_back(point_of[get(vertex_index, v)], normal_of[get(vertex_index, v)]);
       if constexpr(wants_colors)
-        color_sources.emplace_back(v, 0.);
+        color_sources.emplace_back(v, 1.); // weighted equally: the face's mean colour
     }
-    for(auto& source : color_sources) // equal weights: the face's mean colour
-      source.second = 1. / double(color_sources.size());
+    if constexpr(wants_colors)
+      for(auto& source : color_sources)
+        source.second /= double(color_sources.size());
     const auto placed = internal::place_dual_vertex(planes, placement);
     dual_of_face[get(face_index, f)] = add_dual_vertex(placed.first, placed.second);
   }

@@ -43,7 +43,6 @@
 #include <cstdint>
 #include <deque>
 #include <limits>
-#include <memory>
 #include <string>
 #include <unordered_map>
 #include <vector>
