@@ -85,7 +85,8 @@ const char* usage =
     "                        (default 0.1; 0: the identity's uniform remesh)\n"
     "  --sharp-angle DEG     open the creases (dihedral angle above DEG) with\n"
     "                        zero-area triangles first, so that the normal maps put\n"
-    "                        arcs along them\n"
+    "                        arcs along them (and, unless --placement is given,\n"
+    "                        places dual vertices with 'sharp')\n"
     "  --color-weight C      weight of the colour in the colour maps (default 1 for\n"
     "                        position-normal-color, 0.01 for -gradient)\n"
     "  --cell-size H         cell size as a fraction of the input's bounding-box\n"
@@ -96,7 +97,9 @@ const char* usage =
     "                        piece of the surface; primal: the pieces themselves as\n"
     "                        polygons, every vertex of valence 4\n"
     "  --placement NAME      where dual vertices go: qem (the default: closest to the\n"
-    "                        tangent planes of the piece's vertices) or average\n"
+    "                        tangent planes of the piece's vertices), sharp (the\n"
+    "                        same, keeping corners and creases the planes pin) or\n"
+    "                        average\n"
     "  --collapse            collapse dual quads and rotate edges where that makes\n"
     "                        valences more regular (the default)\n"
     "  --no-collapse         keep the dual as it is\n"
@@ -138,7 +141,7 @@ private:
 
 struct Options
 {
-  std::string input, output, map = "identity", output_kind = "dual", placement = "qem";
+  std::string input, output, map = "identity", output_kind = "dual", placement; // placement: "" until chosen
   double cell_size = 0.01;
   double normal_weight = 0.1;
   double color_weight = -1; // negative: the map's default
@@ -217,8 +220,8 @@ Options parse_arguments(int argc, char** argv)
         fail("unknown output '" + options.output_kind + "' (available: dual, primal)");
     } else if(arg == "--placement") {
       options.placement = value();
-      if(options.placement != "qem" && options.placement != "average")
-        fail("unknown placement '" + options.placement + "' (available: qem, average)");
+      if(options.placement != "qem" && options.placement != "sharp" && options.placement != "average")
+        fail("unknown placement '" + options.placement + "' (available: qem, sharp, average)");
     } else if(arg == "--relax") {
       const double k = parse_number(arg, value());
       if(!(k >= 0) || k != std::floor(k) || k > 1000)
@@ -246,6 +249,8 @@ Options parse_arguments(int argc, char** argv)
     fail("expected INPUT and OUTPUT (see --help)");
   options.input = positional[0];
   options.output = positional[1];
+  if(options.placement.empty())
+    options.placement = options.sharp_angle >= 0 ? "sharp" : "qem";
   return options;
 }
 
@@ -499,8 +504,9 @@ RSR::Remesh_statistics run(const Mesh& input, const NamedParameters& np, const O
     stats.time_total_ms = stats.primal.time_total_ms;
     return stats;
   }
-  const auto placement =
-      options.placement == "average" ? RSR::Dual_placement::AVERAGE : RSR::Dual_placement::QEM;
+  const auto placement = options.placement == "average" ? RSR::Dual_placement::AVERAGE
+                         : options.placement == "sharp" ? RSR::Dual_placement::SHARP_FEATURES
+                                                        : RSR::Dual_placement::QEM;
   const auto np_all = RSR::parameters::quad_collapse(options.collapse, RSR::parameters::dual_placement(placement, np));
   if constexpr(colors)
     return RSR::remesh(input, output, np_all, np_out());

@@ -12,6 +12,7 @@
 #include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Color.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
+#include <CGAL/Range_space_remeshing/internal/Polygon_kernel.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 #include <CGAL/Range_space_remeshing/internal/Union_find.h>
 
@@ -43,17 +44,24 @@ namespace internal {
 inline std::pair<Vec3, Vec3> place_dual_vertex(const Tangent_planes& planes, Dual_placement placement)
 {
   Vec3 mass = {{0, 0, 0}}, normal = {{0, 0, 0}};
-  Quadric quadric;
-  for(const auto& plane : planes) {
+  for(const auto& plane : planes)
     for(int d = 0; d < 3; ++d) {
       mass[d] += plane.first[d] / double(planes.size());
       normal[d] += plane.second[d];
     }
-    quadric.add_plane(plane.first, plane.second);
-  }
   const Vec3 unit_normal = normalized(normal);
-  const Vec3 position = placement == Dual_placement::QEM ? quadric.minimiser(mass) : mass;
-  return {position, unit_normal};
+  if(placement == Dual_placement::AVERAGE)
+    return {mass, unit_normal};
+  if(placement == Dual_placement::QEM) {
+    Quadric quadric;
+    quadric.add_planes(planes);
+    return {quadric.minimiser(mass), unit_normal};
+  }
+  std::vector<Vec3> polygon;
+  polygon.reserve(planes.size());
+  for(const auto& plane : planes)
+    polygon.push_back(plane.first);
+  return {into_polygon_kernel(polygon, sharp_feature_minimiser(planes, mass)), unit_normal};
 }
 
 /// Marks in `ends_chain` the valence-2 vertices where the border cycle `cycle` (its

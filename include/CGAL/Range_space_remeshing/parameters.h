@@ -42,7 +42,14 @@ enum class Dual_placement
   AVERAGE,
   /// the minimiser of the squared distances to the tangent planes of the face's
   /// vertices (dual contouring's quadric error, solved robustly). The default.
-  QEM
+  QEM,
+  /// the same minimiser, but keeping the corners and crease lines that the tangent
+  /// planes pin even weakly (as those of a mesh prepared by `insert_crease_triangles()`
+  /// do, where creases meet), and moved into the kernel of the face's polygon (where it
+  /// sees every corner of the face): the dual quads then follow creases around corners
+  /// instead of bridging the notches between them. On smooth inputs it scatters vertices
+  /// more than `QEM` and leaves fewer quads for the collapse to regularise.
+  SHARP_FEATURES
 };
 
 namespace internal_np {

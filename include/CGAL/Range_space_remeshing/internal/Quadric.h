@@ -251,6 +251,19 @@ private:
   friend class Quadric_projection;
 };
 
+/// The bounding box (low, high) of the points of a non-empty range of planes.
+template <class PlaneRange>
+std::pair<Vec3, Vec3> points_box(const PlaneRange& planes)
+{
+  Vec3 low = planes.begin()->first, high = low;
+  for(const auto& plane : planes)
+    for(int d = 0; d < 3; ++d) {
+      low[d] = (std::min)(low[d], plane.first[d]);
+      high[d] = (std::max)(high[d], plane.first[d]);
+    }
+  return {low, high};
+}
+
 /// x clamped to the bounding box of the planes' points: a vertex relaxed on tangent
 /// planes stays over the piece of surface they sample (beyond it, past a crease, say,
 /// the planes no longer describe the surface).
@@ -259,12 +272,7 @@ Vec3 clamped_to_points_box(Vec3 x, const PlaneRange& planes)
 {
   if(planes.empty())
     return x;
-  Vec3 low = planes.begin()->first, high = low;
-  for(const auto& plane : planes)
-    for(int d = 0; d < 3; ++d) {
-      low[d] = (std::min)(low[d], plane.first[d]);
-      high[d] = (std::max)(high[d], plane.first[d]);
-    }
+  const auto [low, high] = points_box(planes);
   for(int d = 0; d < 3; ++d)
     x[d] = (std::min)((std::max)(x[d], low[d]), high[d]);
   return x;
@@ -381,6 +389,42 @@ private:
 inline Vec3 Quadric::minimiser(const Vec3& mass_point, double truncation) const
 {
   return Quadric_projection(*this, truncation)(mass_point);
+}
+
+/// Eigenvalues above this fraction of the largest may still be constrained directions:
+/// where two creases meet at a corner, the planes of the points along them pin the
+/// corner, but with an eigenvalue of a few hundredths only (the normals of a crease's
+/// points blend the normals of its two sides).
+constexpr double sharp_truncation = 0.001;
+
+/// Whether x lies in the bounding box of the planes' points, grown on each side by a
+/// hundredth of its largest extent (rounding puts a corner that is one of the points
+/// just outside, and the box of a flat face has no thickness). In position coordinates,
+/// that box approximates the face's grid cell, dual contouring's bound for its vertex.
+template <class PlaneRange>
+bool is_in_points_box(const Vec3& x, const PlaneRange& planes)
+{
+  if(planes.empty())
+    return false;
+  const auto [low, high] = points_box(planes);
+  const double margin = (std::max)({high[0] - low[0], high[1] - low[1], high[2] - low[2]}) / 100;
+  for(int d = 0; d < 3; ++d)
+    if(!(x[d] >= low[d] - margin && x[d] <= high[d] + margin))
+      return false;
+  return true;
+}
+
+/// The minimiser of the planes' quadric nearest to x that keeps sharp features: truncated
+/// at `sharp_truncation` where that lands in the points' box (a corner or a crease line
+/// that the planes pin), at `quadric_truncation` otherwise (the weak directions then
+/// come from curvature or noise, and their minimiser lies outside).
+template <class PlaneRange>
+Vec3 sharp_feature_minimiser(const PlaneRange& planes, const Vec3& x)
+{
+  Quadric quadric;
+  quadric.add_planes(planes);
+  const Vec3 sharp = quadric.minimiser(x, sharp_truncation);
+  return is_in_points_box(sharp, planes) ? sharp : quadric.minimiser(x);
 }
 
 } // namespace internal
