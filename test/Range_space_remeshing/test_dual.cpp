@@ -669,40 +669,13 @@ void test_fandisk_creases(const Mesh& fandisk)
   };
   const Mesh plain = dual_with(fandisk, RSR::Dual_placement::QEM, 8000);
   const Mesh sharp = dual_with(creased, RSR::Dual_placement::SHARP_FEATURES, 8000);
+  // RMS from random samples, both ways; the largest distance from a fixed grid, which
+  // repeats from run to run
   auto two_sided = [&](const Mesh& quads) {
-    // CGAL's triangulation, and a fan for the faces it leaves (zero-area quads of crease strips)
-    Mesh triangulated = quads, triangles;
-    CGAL::Polygon_mesh_processing::triangulate_faces(triangulated);
-    std::vector<Mesh::Vertex_index> copy_of(num_vertices(triangulated));
-    for(auto v : vertices(triangulated))
-      copy_of[v] = triangles.add_vertex(triangulated.point(v));
-    for(auto f : faces(triangulated)) {
-      std::vector<Mesh::Vertex_index> corners;
-      for(auto v : CGAL::vertices_around_face(halfedge(f, triangulated), triangulated))
-        corners.push_back(copy_of[v]);
-      for(std::size_t i = 1; i + 1 < corners.size(); ++i)
-        triangles.add_face(corners[0], corners[i], corners[i + 1]);
-    }
+    const Mesh triangles = triangulated(quads);
     const Distance out_in = distance_to(fandisk, triangles, 200000), in_out = distance_to(triangles, fandisk, 200000);
-    // the largest distance from a barycentric grid on each triangle: unlike random
-    // samples, the same from run to run
-    auto farthest = [](const Mesh& from, const Mesh& to) {
-      using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
-      Tree tree(faces(to).first, faces(to).second, to);
-      tree.accelerate_distance_queries();
-      const int k = 8;
-      double d2 = 0;
-      for(auto f : faces(from)) {
-        std::vector<Point> c;
-        for(auto v : CGAL::vertices_around_face(halfedge(f, from), from))
-          c.push_back(from.point(v));
-        for(int a = 0; a <= k; ++a)
-          for(int b = 0; a + b <= k; ++b)
-            d2 = std::max(d2, tree.squared_distance(CGAL::barycenter(c[0], k - a - b, c[1], a, c[2], b)));
-      }
-      return std::sqrt(d2) / bbox_diagonal(to);
-    };
-    return Distance{std::max(out_in.rms, in_out.rms), std::max(farthest(triangles, fandisk), farthest(fandisk, triangles))};
+    return Distance{std::max(out_in.rms, in_out.rms),
+                    std::max(largest_grid_distance(triangles, fandisk), largest_grid_distance(fandisk, triangles))};
   };
   const Distance d_plain = two_sided(plain), d_sharp = two_sided(sharp);
   std::cout << "fandisk R^6 dual at equal vertex counts: " << num_vertices(plain) << " vertices, RMS "

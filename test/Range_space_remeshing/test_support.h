@@ -224,19 +224,39 @@ inline double signed_volume(const Mesh& m)
 /// tree); lengths in units of the reference's bounding-box diagonal.
 struct Distance { double rms = 0, max = 0; };
 
-inline Distance distance_to(const Mesh& reference, const Mesh& mesh, std::size_t samples = 100000)
+/// A triangulated copy: CGAL's triangulation, or, where it fails (zero-area faces, as
+/// the crease strips of a mesh prepared by insert_crease_triangles() give), a fan.
+inline Mesh triangulated(const Mesh& mesh)
 {
   Mesh triangles = mesh;
-  CGAL::Polygon_mesh_processing::triangulate_faces(triangles);
+  if(CGAL::Polygon_mesh_processing::triangulate_faces(triangles))
+    return triangles;
+  Mesh fans;
+  std::vector<Mesh::Vertex_index> copy_of(num_vertices(triangles));
+  for(auto v : vertices(triangles))
+    copy_of[v] = fans.add_vertex(triangles.point(v));
+  for(auto f : faces(triangles)) {
+    std::vector<Mesh::Vertex_index> corners;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, triangles), triangles))
+      corners.push_back(copy_of[v]);
+    for(std::size_t i = 1; i + 1 < corners.size(); ++i)
+      fans.add_face(corners[0], corners[i], corners[i + 1]);
+  }
+  return fans;
+}
+
+using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+
+inline Distance distance_to(const Mesh& reference, const Mesh& mesh, std::size_t samples = 100000)
+{
+  const Mesh triangles = triangulated(mesh);
   const double area = CGAL::Polygon_mesh_processing::area(triangles);
   std::vector<Point> points;
   CGAL::Polygon_mesh_processing::sample_triangle_mesh(
       triangles, std::back_inserter(points),
       CGAL::parameters::number_of_points_per_area_unit(double(samples) / area)
           .do_sample_vertices(false).do_sample_edges(false).random_seed(7));
-  using Primitive = CGAL::AABB_face_graph_triangle_primitive<Mesh>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>>;
-  Tree tree(faces(reference).first, faces(reference).second, reference);
+  Triangle_tree tree(faces(reference).first, faces(reference).second, reference);
   tree.accelerate_distance_queries();
   const double diagonal = bbox_diagonal(reference);
   Distance d;
@@ -248,6 +268,26 @@ inline Distance distance_to(const Mesh& reference, const Mesh& mesh, std::size_t
   d.rms = std::sqrt(d.rms / double(points.size())) / diagonal;
   d.max /= diagonal;
   return d;
+}
+
+/// The largest distance from a triangle mesh `from` to `to`, over a barycentric grid of
+/// (k + 1)(k + 2) / 2 points on each triangle, in units of `to`'s bounding-box diagonal.
+/// Unlike distance_to()'s random samples, which did not repeat from run to run here, the
+/// same for the same meshes.
+inline double largest_grid_distance(const Mesh& from, const Mesh& to, int k = 8)
+{
+  Triangle_tree tree(faces(to).first, faces(to).second, to);
+  tree.accelerate_distance_queries();
+  double d2 = 0;
+  for(auto f : faces(from)) {
+    std::vector<Point> c;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, from), from))
+      c.push_back(from.point(v));
+    for(int a = 0; a <= k; ++a)
+      for(int b = 0; a + b <= k; ++b)
+        d2 = std::max(d2, CGAL::to_double(tree.squared_distance(CGAL::barycenter(c[0], k - a - b, c[1], a, c[2], b))));
+  }
+  return std::sqrt(d2) / bbox_diagonal(to);
 }
 
 // ------------------------------------------------------------------ maps
