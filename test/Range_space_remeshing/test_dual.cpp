@@ -521,6 +521,56 @@ void test_dipole_walk()
 /// The relaxation on a quad mesh it did not produce, without tangent planes: a cube
 /// of 6 x 6 quads per side whose face vertices are jittered within their side. The
 /// vertices must even out and stay on the cube: on their side, edge or corner.
+/// One inner vertex in a ring of four quads, in the plane z = 0, whose neighbours'
+/// average lies beyond a reflex corner of the ring (a notch, as where creases meet):
+/// the move would fold a quad over the notch, and the relaxation does not make it.
+/// With the reflex corner moved out of the way, the same move is made.
+void test_relax_keeps_faces_unfolded()
+{
+  for(const double notch_y : {0.05, 0.5}) {
+    Mesh ring;
+    auto add = [&](double x, double y) { return ring.add_vertex(Point(x, y, 0)); };
+    const auto v = add(0, 0), a = add(4, 0), b = add(0, 1), c = add(-1, 0), d = add(0, -1);
+    const auto e = add(0.3, notch_y), f = add(-1, 1), g = add(-1, -1), h = add(0.3, -notch_y);
+    ring.add_face(v, a, e, b);
+    ring.add_face(v, b, f, c);
+    ring.add_face(v, c, g, d);
+    ring.add_face(v, d, h, a);
+    // the inner vertex: one plane z = 0 through each face's centre; the others keep
+    // their place (a border vertex with one plane does not slide)
+    auto planes = ring.add_property_map<Mesh::Vertex_index, RSR::Tangent_planes>("v:planes").first;
+    for(auto face : faces(ring)) {
+      double centre[3] = {0, 0, 0};
+      for(auto corner : vertices_around_face(halfedge(face, ring), ring))
+        for(int k = 0; k < 3; ++k)
+          centre[k] += ring.point(corner)[k] / 4;
+      planes[v].push_back({{{centre[0], centre[1], centre[2]}}, {{0, 0, 1}}});
+    }
+    for(auto w : {a, b, c, d, e, f, g, h})
+      planes[w].push_back({{{ring.point(w).x(), ring.point(w).y(), 0}}, {{0, 0, 1}}});
+    RSR::relax_on_tangent_planes(ring, RSR::parameters::vertex_tangent_planes_map(planes).number_of_iterations(1));
+    int folded = 0;
+    for(auto face : faces(ring)) {
+      std::vector<Point> corners;
+      for(auto corner : vertices_around_face(halfedge(face, ring), ring))
+        corners.push_back(ring.point(corner));
+      double area_z = 0;
+      for(std::size_t k = 0; k < 4; ++k)
+        area_z += corners[k].x() * corners[(k + 1) % 4].y() - corners[(k + 1) % 4].x() * corners[k].y();
+      folded += area_z <= 0;
+    }
+    std::cout << "relaxation by a notch at y = " << notch_y << ": inner vertex at " << ring.point(v) << ", "
+              << folded << " folded quads" << std::endl;
+    CHECK_EQ(folded, 0);
+    // The average of the neighbours is (0.75, 0): it folds the quad (v, a, e, b) when e
+    // is at y = 0.05, not when it is at y = 0.5.
+    if(notch_y < 0.1)
+      CHECK(ring.point(v) == Point(0, 0, 0));
+    else
+      CHECK(std::abs(ring.point(v).x() - 0.75) < 1e-12 && std::abs(ring.point(v).y()) < 1e-12);
+  }
+}
+
 void test_relax_on_cube()
 {
   const int n = 6;
@@ -684,8 +734,9 @@ void test_fandisk_creases(const Mesh& fandisk)
   CHECK(std::abs(double(num_vertices(plain)) / 8000 - 1) < 0.03);
   CHECK(std::abs(double(num_vertices(sharp)) / 8000 - 1) < 0.03);
   // Measured: RMS 1.5e-4 against 3.4e-4, Hausdorff 3.67e-3 against 3.70e-3 (with the
-  // default placement, the creased dual's was 5.3e-3). The Hausdorff margin is thin: the
-  // largest errors left sit where creases meet at notches, whatever the placement.
+  // default placement, the creased dual's was 5.3e-3). The Hausdorff margin is thin and
+  // holds at this size only: at 4,000 to 16,000 vertices the RMS is lower at every
+  // size, the Hausdorff distance at one of six (quads across notches; see the manual).
   CHECK(d_sharp.rms < 0.6 * d_plain.rms);
   CHECK(d_sharp.max < d_plain.max);
 }
@@ -698,6 +749,7 @@ int main(int argc, char** argv)
   test_collapse_on_other_meshes();
   test_edge_rotation();
   test_dipole_walk();
+  test_relax_keeps_faces_unfolded();
   test_relax_on_cube();
   check_input("sphere", make_sphere(1.0, 4), 0.03);
   check_input("torus", make_torus(1.0, 0.4, 120, 60), 0.03);
