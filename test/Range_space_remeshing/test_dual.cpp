@@ -518,9 +518,6 @@ void test_dipole_walk()
   CHECK(walked >= configurations / 2);
 }
 
-/// The relaxation on a quad mesh it did not produce, without tangent planes: a cube
-/// of 6 x 6 quads per side whose face vertices are jittered within their side. The
-/// vertices must even out and stay on the cube: on their side, edge or corner.
 /// One inner vertex in a ring of four quads, in the plane z = 0, whose neighbours'
 /// average lies beyond a reflex corner of the ring (a notch, as where creases meet):
 /// the move would fold a quad over the notch, and the relaxation does not make it.
@@ -571,6 +568,9 @@ void test_relax_keeps_faces_unfolded()
   }
 }
 
+/// The relaxation on a quad mesh it did not produce, without tangent planes: a cube
+/// of 6 x 6 quads per side whose face vertices are jittered within their side. The
+/// vertices must even out and stay on the cube: on their side, edge or corner.
 void test_relax_on_cube()
 {
   const int n = 6;

@@ -66,9 +66,10 @@ inline bool is_folded(const Face_corners& fc, std::size_t k, const std::vector<V
 {
   Vec3 area = {{0, 0, 0}}, reference = {{0, 0, 0}};
   const std::size_t begin = fc.first[k], end = fc.first[k + 1];
+  const Vec3& origin = position[fc.corners[begin]]; // not (0, 0, 0): no cancellation far from it
   for(std::size_t c = begin; c < end; ++c) {
-    const Vec3& a = position[fc.corners[c]];
-    const Vec3& b = position[fc.corners[c + 1 < end ? c + 1 : begin]];
+    const Vec3 a = difference(position[fc.corners[c]], origin);
+    const Vec3 b = difference(position[fc.corners[c + 1 < end ? c + 1 : begin]], origin);
     const Vec3 ab = cross(a, b);
     const Vec3& n = normal[fc.corners[c]];
     for(int d = 0; d < 3; ++d) {
