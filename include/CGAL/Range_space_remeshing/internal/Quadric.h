@@ -248,7 +248,22 @@ private:
   Vec3 b_ = {};
   int planes_ = 0;
 
-  friend class Quadric_projection;
+  friend struct Quadric_eigen;
+};
+
+/// A quadric's eigen-decomposition, done once for projections at several truncations.
+struct Quadric_eigen
+{
+  explicit Quadric_eigen(const Quadric& q) : b(q.b_), planes(q.planes_)
+  {
+    if(planes > 0)
+      symmetric_eigen_3(q.a_, values, vectors);
+  }
+
+  Vec3 b;
+  int planes;
+  Vec3 values = {};
+  std::array<Vec3, 3> vectors = {};
 };
 
 /// The bounding box (low, high) of the points of a non-empty range of planes.
@@ -288,20 +303,19 @@ class Quadric_projection
 public:
   Quadric_projection() = default; // projects nothing: every direction free
 
-  Quadric_projection(const Quadric& q, double truncation)
+  Quadric_projection(const Quadric& q, double truncation) : Quadric_projection(Quadric_eigen(q), truncation) {}
+
+  Quadric_projection(const Quadric_eigen& e, double truncation)
   {
-    if(q.planes_ == 0)
+    if(e.planes == 0)
       return;
-    Vec3 values;
-    std::array<Vec3, 3> vectors;
-    symmetric_eigen_3(q.a_, values, vectors);
-    const double largest = std::max({std::abs(values[0]), std::abs(values[1]), std::abs(values[2])});
+    const double largest = std::max({std::abs(e.values[0]), std::abs(e.values[1]), std::abs(e.values[2])});
     for(int k = 0; k < 3; ++k) {
-      if(!(largest > 0) || !(values[k] > truncation * largest))
+      if(!(largest > 0) || !(e.values[k] > truncation * largest))
         continue;
       // along v_k the quadric is values[k] (<v_k, x> - <v_k, b> / values[k])^2
-      directions_[constrained_] = vectors[k];
-      levels_[constrained_] = dot(vectors[k], q.b_) / values[k];
+      directions_[constrained_] = e.vectors[k];
+      levels_[constrained_] = dot(e.vectors[k], e.b) / e.values[k];
       ++constrained_;
     }
   }
@@ -423,8 +437,9 @@ Vec3 sharp_feature_minimiser(const PlaneRange& planes, const Vec3& x)
 {
   Quadric quadric;
   quadric.add_planes(planes);
-  const Vec3 sharp = quadric.minimiser(x, sharp_truncation);
-  return is_in_points_box(sharp, planes) ? sharp : quadric.minimiser(x);
+  const Quadric_eigen eigen(quadric); // one decomposition for both truncations
+  const Vec3 sharp = Quadric_projection(eigen, sharp_truncation)(x);
+  return is_in_points_box(sharp, planes) ? sharp : Quadric_projection(eigen, quadric_truncation)(x);
 }
 
 } // namespace internal
