@@ -690,6 +690,26 @@ void test_sharp_placement_parts()
   CHECK(std::abs(kept[0] - tilted_mass[0]) < 0.05 && kept[1] == tilted_mass[1]);
 }
 
+/// The area vector of a small quad far from the origin is that of the same quad near it
+/// (the fold and convexity tests of the collapse and the polygon kernel rely on it).
+/// The corners are multiples of 2^-16, so the translated ones are exact; Newell's sums
+/// of coordinates got the x component 1.7 % wrong here.
+void test_newell_normal_far_from_origin()
+{
+  namespace I = RSR::internal;
+  const double u = std::ldexp(1.0, -16);
+  const std::vector<I::Vec3> near_origin = {{{0, 0, 0}}, {{243 * u, 17 * u, 0}}, {{251 * u, 263 * u, 31 * u}},
+                                            {{-5 * u, 241 * u, 13 * u}}};
+  const I::Vec3 offset = {{123456789012.0, -98765432109.0, 55555555555.0}};
+  std::vector<I::Vec3> far_away = near_origin;
+  for(I::Vec3& p : far_away)
+    for(int d = 0; d < 3; ++d)
+      p[d] += offset[d];
+  const I::Vec3 expected = I::newell_normal(near_origin), found = I::newell_normal(far_away);
+  for(int d = 0; d < 3; ++d)
+    CHECK(std::abs(found[d] - expected[d]) <= 1e-12 * std::abs(expected[d]));
+}
+
 /// Issue 4's claim on CGAL's fandisk: opening the creases (`insert_crease_triangles()`)
 /// and placing dual vertices with `Dual_placement::SHARP_FEATURES` brings the R^6 dual
 /// closer to the input than the dual of the unopened mesh with the default placement, at
@@ -745,6 +765,7 @@ int main(int argc, char** argv)
 {
   test_symmetric_eigen();
   test_sharp_placement_parts();
+  test_newell_normal_far_from_origin();
   test_quad_cube();
   test_collapse_on_other_meshes();
   test_edge_rotation();

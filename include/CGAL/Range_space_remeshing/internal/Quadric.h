@@ -80,16 +80,16 @@ inline Vec3 cross(const Vec3& a, const Vec3& b)
   return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
 }
 
-/// Twice the vector area of a polygon (Newell's normal).
+/// Twice the vector area of a polygon (Newell's normal), summed over the fan from its
+/// first corner: Newell's own sums of coordinates lose the area to cancellation when
+/// the polygon is small against its distance to the origin.
 inline Vec3 newell_normal(const std::vector<Vec3>& polygon)
 {
   Vec3 n = {{0, 0, 0}};
-  for(std::size_t i = 0; i < polygon.size(); ++i) {
-    const Vec3& p = polygon[i];
-    const Vec3& q = polygon[(i + 1) % polygon.size()];
-    n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-    n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-    n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+  for(std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+    const Vec3 fan = cross(difference(polygon[i], polygon[0]), difference(polygon[i + 1], polygon[0]));
+    for(int d = 0; d < 3; ++d)
+      n[d] += fan[d];
   }
   return n;
 }
