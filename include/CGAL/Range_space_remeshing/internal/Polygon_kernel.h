@@ -69,12 +69,14 @@ inline Vec3 closest_in_convex(const std::vector<Vec3>& convex, const Vec3& x)
 /// hiding another, so its dual vertex joined to its neighbours' stays over the face. An
 /// L-shaped face (where a crease turns a corner, say) has its kernel near the inner
 /// corner, while its mass point, or the quadric's minimiser, may lie over the notch. x is
-/// returned as it is if the polygon has no area or no kernel (a folded polygon).
+/// returned as it is if the polygon is flat (`is_flat()`: no plane to see it in) or has
+/// no kernel (a folded polygon).
 inline Vec3 into_polygon_kernel(const std::vector<Vec3>& polygon, const Vec3& x)
 {
-  const Vec3 n = normalized(newell_normal(polygon));
-  if(polygon.size() < 3 || n == Vec3{{0, 0, 0}})
+  const Vec3 area = newell_normal(polygon);
+  if(polygon.size() < 3 || is_flat(polygon, area))
     return x;
+  const Vec3 n = normalized(area);
   const Vec3 e1 = any_orthogonal(n), e2 = cross(n, e1);
   const Vec3& origin = polygon.front(); // coordinates relative to it: no cancellation
   auto flat = [&](const Vec3& p) {
