@@ -77,6 +77,8 @@ inline Vec3 into_polygon_kernel(const std::vector<Vec3>& polygon, const Vec3& x)
   if(polygon.size() < 3 || is_flat(polygon, area))
     return x;
   const Vec3 n = normalized(area);
+  if(n == Vec3{{0, 0, 0}})
+    return x; // not finite
   const Vec3 e1 = any_orthogonal(n), e2 = cross(n, e1);
   const Vec3& origin = polygon.front(); // coordinates relative to it: no cancellation
   auto flat = [&](const Vec3& p) {
