@@ -661,7 +661,7 @@ void test_sharp_placement_parts()
   // a polygon whose corners lie on a line (a primal face inside an opened crease), far
   // from the origin: its Newell normal is rounding, which must not choose a plane to
   // move the point in (it moved in 3 of these 200 places, by up to 0.4, before
-  // `is_flat()` was checked)
+  // `lies_on_a_line()` was checked)
   std::size_t moved_off_line = 0;
   for(int t = 0; t < 200; ++t) {
     const double o = 1000 + 0.37 * t;

@@ -69,12 +69,12 @@ inline Vec3 closest_in_convex(const std::vector<Vec3>& convex, const Vec3& x)
 /// hiding another, so its dual vertex joined to its neighbours' stays over the face. An
 /// L-shaped face (where a crease turns a corner, say) has its kernel near the inner
 /// corner, while its mass point, or the quadric's minimiser, may lie over the notch. x is
-/// returned as it is if the polygon is flat (`is_flat()`: no plane to see it in) or has
-/// no kernel (a folded polygon).
+/// returned as it is if the polygon lies on a line (`lies_on_a_line()`: no plane to see it
+/// in) or has no kernel (a folded polygon).
 inline Vec3 into_polygon_kernel(const std::vector<Vec3>& polygon, const Vec3& x)
 {
   const Vec3 area = newell_normal(polygon);
-  if(polygon.size() < 3 || is_flat(polygon, area))
+  if(polygon.size() < 3 || lies_on_a_line(polygon, area))
     return x;
   const Vec3 n = normalized(area);
   if(n == Vec3{{0, 0, 0}})

@@ -94,22 +94,22 @@ inline Vec3 newell_normal(const std::vector<Vec3>& polygon)
   return n;
 }
 
-/// A polygon whose area is below this fraction of its longest side squared is flat:
-/// its corners lie on a line up to rounding (or so nearly that its plane means
-/// nothing), as those of the primal faces inside the zero-area strips of opened
-/// creases do. Its Newell normal is then rounding error, whose direction must decide
-/// nothing.
-constexpr double flat_polygon_ratio = 1e-9;
+/// A polygon whose area is below this fraction of its longest side squared lies on a
+/// line: up to rounding (or so nearly that its plane means nothing), as the corners of
+/// the primal faces inside the zero-area strips of opened creases do. Its Newell normal
+/// is then rounding error, whose direction must decide nothing.
+constexpr double line_polygon_ratio = 1e-9;
 
-/// Whether the polygon, whose Newell normal (twice its vector area) is `normal`, is flat.
-inline bool is_flat(const std::vector<Vec3>& polygon, const Vec3& normal)
+/// Whether the polygon, whose Newell normal (twice its vector area) is `normal`, lies
+/// on a line (see `line_polygon_ratio`).
+inline bool lies_on_a_line(const std::vector<Vec3>& polygon, const Vec3& normal)
 {
   double longest = 0; // squared
   for(std::size_t i = 0; i < polygon.size(); ++i) {
     const Vec3 side = difference(polygon[(i + 1) % polygon.size()], polygon[i]);
     longest = (std::max)(longest, dot(side, side));
   }
-  return std::sqrt(dot(normal, normal)) <= 2 * flat_polygon_ratio * longest;
+  return std::sqrt(dot(normal, normal)) <= 2 * line_polygon_ratio * longest;
 }
 
 /// Whether the polygon turns left at every corner, seen from the side of `normal`.
