@@ -43,18 +43,13 @@ inline void keep_left_of(std::vector<Vec3>& convex, const Vec3& a, const Vec3& b
   convex.swap(scratch);
 }
 
-/// The point of the flat convex polygon `convex` (counter-clockwise) closest to x.
-inline Vec3 closest_in_convex(const std::vector<Vec3>& convex, const Vec3& x)
+/// The point of the polygon's sides closest to x.
+inline Vec3 closest_on_sides(const std::vector<Vec3>& polygon, const Vec3& x)
 {
-  bool inside = true;
-  for(std::size_t i = 0; i < convex.size() && inside; ++i)
-    inside = turn(convex[i], convex[(i + 1) % convex.size()], x) >= 0;
-  if(inside)
-    return x;
-  Vec3 best = convex.front();
+  Vec3 best = polygon.front();
   double best_d2 = std::numeric_limits<double>::infinity();
-  for(std::size_t i = 0; i < convex.size(); ++i) {
-    const Vec3 c = closest_on_segment(x, convex[i], convex[(i + 1) % convex.size()]);
+  for(std::size_t i = 0; i < polygon.size(); ++i) {
+    const Vec3 c = closest_on_segment(x, polygon[i], polygon[(i + 1) % polygon.size()]);
     const double d2 = dot(difference(x, c), difference(x, c));
     if(d2 < best_d2) {
       best_d2 = d2;
@@ -64,17 +59,60 @@ inline Vec3 closest_in_convex(const std::vector<Vec3>& convex, const Vec3& x)
   return best;
 }
 
+/// The point of the flat convex polygon `convex` (counter-clockwise) closest to x.
+inline Vec3 closest_in_convex(const std::vector<Vec3>& convex, const Vec3& x)
+{
+  bool inside = true;
+  for(std::size_t i = 0; i < convex.size() && inside; ++i)
+    inside = turn(convex[i], convex[(i + 1) % convex.size()], x) >= 0;
+  return inside ? x : closest_on_sides(convex, x);
+}
+
+/// Whether the polygon, whose Newell normal is `normal`, encloses nothing: it lies on a
+/// line, or is a tree of segments (as where opened creases meet), each of its sides
+/// gone over again by another. It has no net area (`has_no_net_area()`), and the
+/// midpoint of every side lies on another side (up to `no_area_ratio` of the longest);
+/// a folded polygon whose two lobes cancel, a bow tie, has the first property only.
+inline bool encloses_nothing(const std::vector<Vec3>& polygon, const Vec3& normal)
+{
+  if(!has_no_net_area(polygon, normal))
+    return false;
+  const double tolerance2 = no_area_ratio * no_area_ratio * longest_side_squared(polygon);
+  const std::size_t n = polygon.size();
+  for(std::size_t i = 0; i < n; ++i) {
+    const Vec3& a = polygon[i];
+    const Vec3& b = polygon[(i + 1) % n];
+    const Vec3 mid = {{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2}};
+    bool retraced = false;
+    for(std::size_t j = 0; j < n && !retraced; ++j) {
+      if(j == i)
+        continue;
+      const Vec3 c = closest_on_segment(mid, polygon[j], polygon[(j + 1) % n]);
+      retraced = dot(difference(mid, c), difference(mid, c)) <= tolerance2;
+    }
+    if(!retraced)
+      return false;
+  }
+  return true;
+}
+
 /// x moved, parallel to the polygon's mean plane, to the nearest point of the polygon's
 /// kernel seen along its Newell normal: the primal face seen from there has no corner
 /// hiding another, so its dual vertex joined to its neighbours' stays over the face. An
 /// L-shaped face (where a crease turns a corner, say) has its kernel near the inner
-/// corner, while its mass point, or the quadric's minimiser, may lie over the notch. x is
-/// returned as it is if the polygon lies on a line (`lies_on_a_line()`: no plane to see it
-/// in) or has no kernel (a folded polygon).
+/// corner, while its mass point, or the quadric's minimiser, may lie over the notch. A
+/// polygon that encloses nothing (`encloses_nothing()`: a segment, or a tree of segments
+/// where opened creases meet) is made of its sides: x goes to the nearest point of a
+/// side. x is returned as it is if the polygon has no kernel (a folded polygon) or no
+/// plane (no net area, rounding for a normal).
 inline Vec3 into_polygon_kernel(const std::vector<Vec3>& polygon, const Vec3& x)
 {
+  if(polygon.empty())
+    return x;
   const Vec3 area = newell_normal(polygon);
-  if(polygon.size() < 3 || lies_on_a_line(polygon, area))
+  if(polygon.size() < 3 || encloses_nothing(polygon, area))
+    return closest_on_sides(polygon, x);
+  if(has_no_net_area(polygon, area))
     return x;
   const Vec3 n = normalized(area);
   if(n == Vec3{{0, 0, 0}})
@@ -107,6 +145,19 @@ inline Vec3 into_polygon_kernel(const std::vector<Vec3>& polygon, const Vec3& x)
   for(int d = 0; d < 3; ++d)
     moved[d] += (y[0] - x_flat[0]) * e1[d] + (y[1] - x_flat[1]) * e2[d];
   return moved;
+}
+
+/// Whether the points of the tangent planes (three or more), in order, are the corners of
+/// a polygon that encloses nothing (`encloses_nothing()`): those of the dual vertex of a primal face
+/// inside the zero-area strips of opened creases, or where such strips meet. `scratch`
+/// keeps its memory from call to call.
+template <class PlaneRange>
+bool planes_of_face_without_area(const PlaneRange& planes, std::vector<Vec3>& scratch)
+{
+  scratch.clear();
+  for(const auto& plane : planes)
+    scratch.push_back(plane.first);
+  return scratch.size() >= 3 && encloses_nothing(scratch, newell_normal(scratch));
 }
 
 } // namespace internal

@@ -94,22 +94,29 @@ inline Vec3 newell_normal(const std::vector<Vec3>& polygon)
   return n;
 }
 
-/// A polygon whose area is below this fraction of its longest side squared lies on a
-/// line: up to rounding (or so nearly that its plane means nothing), as the corners of
+/// A polygon whose net area is below this fraction of its longest side squared has
+/// none: up to rounding (or so nearly that its plane means nothing), as the corners of
 /// the primal faces inside the zero-area strips of opened creases do. Its Newell normal
 /// is then rounding error, whose direction must decide nothing.
-constexpr double line_polygon_ratio = 1e-9;
+constexpr double no_area_ratio = 1e-9;
 
-/// Whether the polygon, whose Newell normal (twice its vector area) is `normal`, lies
-/// on a line (see `line_polygon_ratio`).
-inline bool lies_on_a_line(const std::vector<Vec3>& polygon, const Vec3& normal)
+/// The longest side of the polygon, squared.
+inline double longest_side_squared(const std::vector<Vec3>& polygon)
 {
-  double longest = 0; // squared
+  double longest = 0;
   for(std::size_t i = 0; i < polygon.size(); ++i) {
     const Vec3 side = difference(polygon[(i + 1) % polygon.size()], polygon[i]);
     longest = (std::max)(longest, dot(side, side));
   }
-  return std::sqrt(dot(normal, normal)) <= 2 * line_polygon_ratio * longest;
+  return longest;
+}
+
+/// Whether the polygon, whose Newell normal (twice its vector area) is `normal`, has
+/// no net area (see `no_area_ratio`): it lies on a line, or is a tree of segments, or
+/// folds so that its lobes cancel.
+inline bool has_no_net_area(const std::vector<Vec3>& polygon, const Vec3& normal)
+{
+  return std::sqrt(dot(normal, normal)) <= 2 * no_area_ratio * longest_side_squared(polygon);
 }
 
 /// Whether the polygon turns left at every corner, seen from the side of `normal`.
