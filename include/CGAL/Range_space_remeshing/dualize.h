@@ -61,7 +61,7 @@ inline std::pair<Vec3, Vec3> place_dual_vertex(const Tangent_planes& planes, Dua
   polygon.reserve(planes.size());
   for(const auto& plane : planes)
     polygon.push_back(plane.first);
-  return {into_polygon_kernel(polygon, sharp_feature_minimiser(planes, mass)), unit_normal};
+  return {into_face(polygon, normal, sharp_feature_minimiser(planes, mass)), unit_normal};
 }
 
 /// Marks in `ends_chain` the valence-2 vertices where the border cycle `cycle` (its

@@ -47,8 +47,12 @@ enum class Dual_placement
   /// planes pin even weakly (as those of a mesh prepared by `insert_crease_triangles()`
   /// do, where creases meet), and moved into the kernel of the face's polygon (where it
   /// sees every corner of the face): the dual quads then follow creases around corners
-  /// instead of bridging the notches between them. On smooth inputs it scatters vertices
-  /// more than `QEM` and leaves fewer quads for the collapse to regularise.
+  /// instead of bridging the notches between them. A face whose polygon encloses nothing
+  /// (inside an opened crease) gets the point of its sides nearest to the minimiser; a
+  /// face whose polygon turns against its vertices' normals (around a concave corner,
+  /// where that polygon is the notch) gets its corner nearest to it. On smooth inputs it
+  /// scatters vertices more than `QEM` and leaves fewer quads for the collapse to
+  /// regularise.
   SHARP_FEATURES
 };
 

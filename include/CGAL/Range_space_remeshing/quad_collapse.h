@@ -60,7 +60,11 @@ The merged vertex takes the union of the two vertices' tangent planes (their qua
 error), and is placed as in the relaxation: the midpoint moved to the nearest
 minimiser of the squared distances to the merged tangent planes, along the directions
 they constrain (the normal in a smooth region; onto the crease line where the planes
-of two sides meet). Collapses and rotations are tried in passes, in decreasing order of
+of two sides meet). A vertex whose tangent planes' points enclose nothing (the dual
+vertex of a primal face inside a crease opened by `insert_crease_triangles()`) keeps
+its place, and two such vertices meet on one of their faces' sides: the midpoint of
+vertices on two creases of a concave corner lies in the notch between them, which
+the planes of a side do not keep it out of. Collapses and rotations are tried in passes, in decreasing order of
 energy decrease, until a pass (or a walk of the dipoles, which counts as one) changes
 nothing or `number_of_iterations` passes have run.
 

@@ -147,6 +147,25 @@ inline Vec3 into_polygon_kernel(const std::vector<Vec3>& polygon, const Vec3& x)
   return moved;
 }
 
+/// The dual vertex of a primal face whose corners are `polygon`, on a surface whose
+/// normal there is `surface_normal` (the sum of the corners'), from the minimiser x of
+/// its planes: x moved into the polygon's kernel (`into_polygon_kernel()`), but where
+/// the polygon turns against the surface, the corner nearest to x. Such a polygon is
+/// that of a face around a concave corner where opened creases meet: the face spans
+/// three quarters of a turn of a side around the corner, its corners lie on the two
+/// creases and at the corner, and their polygon, the remaining quarter, is the notch.
+inline Vec3 into_face(const std::vector<Vec3>& polygon, const Vec3& surface_normal, const Vec3& x)
+{
+  if(polygon.size() >= 3 && dot(newell_normal(polygon), surface_normal) < 0) {
+    Vec3 nearest = polygon.front();
+    for(const Vec3& corner : polygon)
+      if(dot(difference(corner, x), difference(corner, x)) < dot(difference(nearest, x), difference(nearest, x)))
+        nearest = corner;
+    return nearest;
+  }
+  return into_polygon_kernel(polygon, x);
+}
+
 /// Whether the points of the tangent planes (three or more), in order, are the corners of
 /// a polygon that encloses nothing (`encloses_nothing()`): those of the dual vertex of a primal face
 /// inside the zero-area strips of opened creases, or where such strips meet. `scratch`
@@ -158,6 +177,31 @@ bool planes_of_face_without_area(const PlaneRange& planes, std::vector<Vec3>& sc
   for(const auto& plane : planes)
     scratch.push_back(plane.first);
   return scratch.size() >= 3 && encloses_nothing(scratch, newell_normal(scratch));
+}
+
+/// Where a collapse puts vertices a and c (at `pa` and `pc`, with tangent planes
+/// `planes_a` and `planes_c`) if either lies on a primal face that encloses nothing (on
+/// an opened crease): such a vertex keeps its place, as in the relaxation, because the
+/// midpoint of it and a vertex on another crease, or on a side, may lie in the notch
+/// between them, off the surface; two such vertices go to the point of their faces'
+/// sides nearest to `merged`, their midpoint on input. Returns false, `merged`
+/// untouched, if neither does. `scratch_a` and `scratch_c` keep their memory.
+template <class PlaneRange>
+bool merged_on_creases(const PlaneRange& planes_a, const Vec3& pa, const PlaneRange& planes_c, const Vec3& pc,
+                       Vec3& merged, std::vector<Vec3>& scratch_a, std::vector<Vec3>& scratch_c)
+{
+  const bool a_on_crease = planes_of_face_without_area(planes_a, scratch_a);
+  const bool c_on_crease = planes_of_face_without_area(planes_c, scratch_c);
+  if(a_on_crease != c_on_crease) {
+    merged = a_on_crease ? pa : pc;
+    return true;
+  }
+  if(!a_on_crease)
+    return false;
+  const Vec3 on_a = closest_on_sides(scratch_a, merged), on_c = closest_on_sides(scratch_c, merged);
+  const Vec3 to_a = difference(on_a, merged), to_c = difference(on_c, merged);
+  merged = dot(to_a, to_a) <= dot(to_c, to_c) ? on_a : on_c;
+  return true;
 }
 
 } // namespace internal

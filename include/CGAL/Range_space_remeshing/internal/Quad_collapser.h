@@ -25,6 +25,7 @@
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
+#include <CGAL/Range_space_remeshing/internal/Polygon_kernel.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
 #include <CGAL/boost/graph/iterator.h>
@@ -693,12 +694,15 @@ private:
 
   /// The paper's placement, generalised as in the relaxation: the midpoint of a and c
   /// moved to the nearest minimiser of the distances to the union of their tangent
-  /// planes (along the normal in a smooth region, onto the line of a crease).
+  /// planes (along the normal in a smooth region, onto the line of a crease); on opened
+  /// creases, `merged_on_creases()`.
   Vec3 merged_position(halfedge_descriptor h0) const
   {
     const vertex_descriptor a = source(h0, mesh_), c = target(next(h0, mesh_), mesh_);
     const Vec3 pa = position(a), pc = position(c);
-    const Vec3 mid = {{(pa[0] + pc[0]) / 2, (pa[1] + pc[1]) / 2, (pa[2] + pc[2]) / 2}};
+    Vec3 mid = {{(pa[0] + pc[0]) / 2, (pa[1] + pc[1]) / 2, (pa[2] + pc[2]) / 2}};
+    if(merged_on_creases(get(planes_, a), pa, get(planes_, c), pc, mid, corners_, quad_corners_))
+      return mid;
     Quadric quadric;
     quadric.add_planes(get(planes_, a));
     quadric.add_planes(get(planes_, c));
