@@ -304,18 +304,21 @@ std::pair<Vec3, Vec3> points_box(const PlaneRange& planes)
   return {low, high};
 }
 
+/// x clamped to the box (low, high).
+inline Vec3 clamped_to_box(Vec3 x, const std::pair<Vec3, Vec3>& box)
+{
+  for(int d = 0; d < 3; ++d)
+    x[d] = (std::min)((std::max)(x[d], box.first[d]), box.second[d]);
+  return x;
+}
+
 /// x clamped to the bounding box of the planes' points: a vertex relaxed on tangent
 /// planes stays over the piece of surface they sample (beyond it, past a crease, say,
 /// the planes no longer describe the surface).
 template <class PlaneRange>
-Vec3 clamped_to_points_box(Vec3 x, const PlaneRange& planes)
+Vec3 clamped_to_points_box(const Vec3& x, const PlaneRange& planes)
 {
-  if(planes.empty())
-    return x;
-  const auto [low, high] = points_box(planes);
-  for(int d = 0; d < 3; ++d)
-    x[d] = (std::min)((std::max)(x[d], low[d]), high[d]);
-  return x;
+  return planes.empty() ? x : clamped_to_box(x, points_box(planes));
 }
 
 /// Moves points to the nearest minimisers of a quadric, along the directions it
@@ -436,19 +439,31 @@ inline Vec3 Quadric::minimiser(const Vec3& mass_point, double truncation) const
 /// points blend the normals of its two sides).
 constexpr double sharp_truncation = 0.001;
 
-/// Whether x lies in the bounding box of the planes' points, grown on each side by a
-/// hundredth of its largest extent (rounding puts a corner that is one of the points
-/// just outside, and the box of a flat face has no thickness). In position coordinates,
-/// that box approximates the face's grid cell, dual contouring's bound for its vertex.
+/// The bounding box of the planes' points, grown on each side by a hundredth of its
+/// largest extent (rounding puts a corner that is one of the points just outside, and
+/// the box of a flat face has no thickness). In position coordinates, that box
+/// approximates the face's grid cell, dual contouring's bound for its vertex.
+template <class PlaneRange>
+std::pair<Vec3, Vec3> grown_points_box(const PlaneRange& planes)
+{
+  auto [low, high] = points_box(planes);
+  const double margin = (std::max)({high[0] - low[0], high[1] - low[1], high[2] - low[2]}) / 100;
+  for(int d = 0; d < 3; ++d) {
+    low[d] -= margin;
+    high[d] += margin;
+  }
+  return {low, high};
+}
+
+/// Whether x lies in the grown box of the planes' points (`grown_points_box()`).
 template <class PlaneRange>
 bool is_in_points_box(const Vec3& x, const PlaneRange& planes)
 {
   if(planes.empty())
     return false;
-  const auto [low, high] = points_box(planes);
-  const double margin = (std::max)({high[0] - low[0], high[1] - low[1], high[2] - low[2]}) / 100;
+  const auto [low, high] = grown_points_box(planes);
   for(int d = 0; d < 3; ++d)
-    if(!(x[d] >= low[d] - margin && x[d] <= high[d] + margin))
+    if(!(x[d] >= low[d] && x[d] <= high[d]))
       return false;
   return true;
 }
@@ -456,7 +471,9 @@ bool is_in_points_box(const Vec3& x, const PlaneRange& planes)
 /// The minimiser of the planes' quadric nearest to x that keeps sharp features: truncated
 /// at `sharp_truncation` where that lands in the points' box (a corner or a crease line
 /// that the planes pin), at `quadric_truncation` otherwise (the weak directions then
-/// come from curvature or noise, and their minimiser lies outside).
+/// come from curvature or noise, and their minimiser lies outside), and then clamped
+/// into the box: the blended normals of the planes around a convex corner of three
+/// opened creases can pin a point beyond the corner, outside the solid.
 template <class PlaneRange>
 Vec3 sharp_feature_minimiser(const PlaneRange& planes, const Vec3& x)
 {
@@ -464,7 +481,10 @@ Vec3 sharp_feature_minimiser(const PlaneRange& planes, const Vec3& x)
   quadric.add_planes(planes);
   const Quadric_eigen eigen(quadric); // one decomposition for both truncations
   const Vec3 sharp = Quadric_projection(eigen, sharp_truncation)(x);
-  return is_in_points_box(sharp, planes) ? sharp : Quadric_projection(eigen, quadric_truncation)(x);
+  if(is_in_points_box(sharp, planes))
+    return sharp;
+  const Vec3 fallback = Quadric_projection(eigen, quadric_truncation)(x);
+  return planes.empty() ? fallback : clamped_to_box(fallback, grown_points_box(planes));
 }
 
 } // namespace internal
