@@ -166,10 +166,10 @@ inline Vec3 into_face(const std::vector<Vec3>& polygon, const Vec3& surface_norm
   return into_polygon_kernel(polygon, x);
 }
 
-/// Whether the points of the tangent planes (three or more), in order, are the corners of
-/// a polygon that encloses nothing (`encloses_nothing()`): those of the dual vertex of a primal face
-/// inside the zero-area strips of opened creases, or where such strips meet. `scratch`
-/// keeps its memory from call to call.
+/// Whether the points of the tangent planes (three or more), in order, are the corners
+/// of a polygon that encloses nothing (`encloses_nothing()`): those of the dual vertex
+/// of a primal face inside the zero-area strips of opened creases, or where such strips
+/// meet. `scratch` keeps its memory from call to call.
 template <class PlaneRange>
 bool planes_of_face_without_area(const PlaneRange& planes, std::vector<Vec3>& scratch)
 {
