@@ -108,7 +108,8 @@ const char* usage =
     "                        the triangles the arcs cross (sublinear), may miss pieces\n"
     "  --preserve-topology   reduce the cell size until the output has the input's\n"
     "                          topology (closed loops, non-disk cells, lost pieces:\n"
-    "                          see the manual) and, for the dual, no parallel edges;\n"
+    "                          see the manual) and, for the dual, no parallel edges\n"
+    "                          (nor faces joined to undo them);\n"
     "                          the cell size used is in --stats\n"
     "  --no-topology-check   skip the topology check (on by default but with\n"
     "                          --seeded, which cannot check it); a warning is printed\n"
@@ -654,14 +655,16 @@ double cell_size_for_target(const Mesh& input, const Input_normals& normals, dou
 }
 
 /// `remesh()`; with --preserve-topology and the dual output, the cell size is also
-/// refined (from the one the primal needed) until the dual has no parallel edges,
-/// which a mesh file could not store: the topology is kept for the file too.
+/// refined (from the one the primal needed) until the dual has no parallel edges
+/// left, which a mesh file could not store, nor any undone by joining two faces into a
+/// face that is not a quad: the topology is kept for the file too, in quads.
 RSR::Remesh_statistics remesh_preserving_topology(const Mesh& input, const Input_normals& normals, double h,
                                                   const Options& options, Mesh& output)
 {
   RSR::Remesh_statistics stats = remesh(input, normals, h, options, output);
   for(int refinement = 0; options.preserve_topology && options.output_kind != "primal" &&
-                          stats.dual.parallel_edges > 0 && refinement < 10;
+                          stats.dual.parallel_edges + stats.dual.joined_parallel_edges > 0 &&
+                          refinement < 10;
       ++refinement)
     stats = remesh(input, normals, stats.primal.cell_size * std::sqrt(0.5), options, output);
   return stats;
@@ -738,6 +741,8 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
        << ", \"quads\": " << quads << ", \"non_quads\": " << num_faces(output) - quads
        << ", \"joined_triangle_pairs\": " << all.dual.joined_triangle_pairs
        << ", \"dual_dropped_pieces\": " << all.dual.dropped_pieces
+       << ", \"removed_pinches\": " << all.dual.removed_pinches
+       << ", \"joined_parallel_edges\": " << all.dual.joined_parallel_edges
        << ", \"collapsed_quads\": " << all.collapse.collapsed_quads
        << ", \"removed_doublets\": " << all.collapse.removed_doublets
        << ", \"rotated_edges\": " << all.collapse.rotated_edges

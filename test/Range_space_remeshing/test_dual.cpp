@@ -22,6 +22,7 @@
 #include <array>
 #include <limits>
 #include <random>
+#include <sstream>
 
 using namespace test;
 namespace params = CGAL::parameters;
@@ -647,6 +648,38 @@ void test_dual_with_many_digons(const Mesh& input)
   CHECK_EQ(euler_characteristic(quads), euler_characteristic(primal));
 }
 
+/// Where two primal faces share two edges (parts thinner than a cell), their dual
+/// vertices are joined by two parallel edges. The dual undoes every pair so that it can
+/// be written to a face-list file and read back: `expect` says how the pairs of this
+/// input are undone (pinches: two triangles around a vertex of valence 2, removed;
+/// joins: two triangles over the same three corners, a last resort).
+void check_storable_dual(const std::string& name, const Mesh& input, double relative_cell_size,
+                         std::size_t RSR::Dual_statistics::*expect)
+{
+  const double diagonal = bbox_diagonal(input);
+  const auto f = RSR::make_position_normal_range_map(input, 1.0, 0.1 * diagonal);
+  Mesh primal, quads;
+  RSR::primal_remesh(input, primal, RSR::parameters::range_map(f).grid_spacing(relative_cell_size * diagonal));
+  const auto dual = RSR::dualize(primal, quads);
+  std::cout << "R^6 " << name << " at " << relative_cell_size << " diagonals: " << dual.removed_pinches
+            << " pinches removed, " << dual.joined_parallel_edges << " parallel edges joined, "
+            << dual.parallel_edges << " left" << std::endl;
+  CHECK(dual.*expect > 0);
+  CHECK_EQ(dual.parallel_edges, std::size_t(0));
+  CHECK_EQ(RSR::internal::number_of_parallel_edges(quads), std::size_t(0));
+  CHECK(CGAL::is_valid_polygon_mesh(quads));
+  CHECK(CGAL::is_closed(quads));
+  CHECK_EQ(euler_characteristic(quads), euler_characteristic(primal));
+  CHECK_EQ(num_vertices(quads), dual.dual_vertices);
+  CHECK_EQ(num_faces(quads), dual.dual_faces);
+  CHECK_EQ(dual.quads + dual.non_quads, num_faces(quads));
+  std::stringstream file;
+  CHECK(CGAL::IO::write_OFF(file, quads, CGAL::parameters::stream_precision(17)));
+  Mesh read_back;
+  CHECK(CGAL::IO::read_OFF(file, read_back));
+  CHECK_EQ(num_faces(read_back), num_faces(quads));
+}
+
 /// The sharp placement's two parts on their own: the kernel of an L-shaped polygon, and
 /// a corner that the planes pin only weakly.
 void test_sharp_placement_parts()
@@ -861,6 +894,10 @@ int main(int argc, char** argv)
         test_dual_with_many_digons(input);
       if(name == std::string("fandisk"))
         test_fandisk_creases(input);
+      if(name == std::string("bunny00"))
+        check_storable_dual(name, input, 0.05, &RSR::Dual_statistics::removed_pinches);
+      if(name == std::string("elephant"))
+        check_storable_dual(name, input, 0.12, &RSR::Dual_statistics::joined_parallel_edges);
     }
   return report("test_dual");
 }

@@ -128,6 +128,14 @@ struct Dual_statistics
   /// valid in the halfedge structure, but a file format that stores faces as vertex
   /// lists cannot keep them apart
   std::size_t parallel_edges = 0;
+  /// pinches removed: where two primal faces share two edges with a digon between them,
+  /// the dual has two triangles around a vertex of valence 2 between two parallel edges;
+  /// that disk is removed and the two edges glued into one (the topology is kept)
+  std::size_t removed_pinches = 0;
+  /// pairs of parallel edges that neither a pinch removal nor a rotation undoes, one of
+  /// whose edges is removed by joining its two faces into one (a face with more corners,
+  /// counted in `non_quads`)
+  std::size_t joined_parallel_edges = 0;
   double time_ms = 0;
 };
 

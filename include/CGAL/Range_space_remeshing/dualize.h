@@ -109,6 +109,29 @@ std::size_t number_of_parallel_edges(const Mesh& mesh)
   return parallel;
 }
 
+/// One halfedge of each of two edges joining the same two vertices, from the lower one.
+template <class Mesh>
+std::vector<std::pair<typename boost::graph_traits<Mesh>::halfedge_descriptor,
+                      typename boost::graph_traits<Mesh>::halfedge_descriptor>>
+parallel_halfedge_pairs(const Mesh& mesh)
+{
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  std::vector<std::pair<halfedge_descriptor, halfedge_descriptor>> pairs;
+  std::vector<std::pair<vertex_descriptor, halfedge_descriptor>> neighbours;
+  for(vertex_descriptor v : vertices(mesh)) {
+    neighbours.clear();
+    for(halfedge_descriptor h : CGAL::halfedges_around_source(v, mesh)) {
+      const vertex_descriptor w = target(h, mesh);
+      for(const auto& [u, g] : neighbours)
+        if(u == w && v < w)
+          pairs.emplace_back(g, h);
+      neighbours.emplace_back(w, h);
+    }
+  }
+  return pairs;
+}
+
 /// Parallel edges (two edges joining the same two vertices: where two primal faces
 /// share two edges, which coarse cells give around thin parts) cannot be stored in
 /// face-list files. Each pair is undone by rotating one of its edges inside the
@@ -120,18 +143,9 @@ std::size_t rotate_parallel_edges(Mesh& mesh, VertexPointMap vpm)
   using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   std::vector<halfedge_descriptor> parallel; // one halfedge of each pair's edges
-  std::vector<std::pair<vertex_descriptor, halfedge_descriptor>> neighbours;
-  for(vertex_descriptor v : vertices(mesh)) {
-    neighbours.clear();
-    for(halfedge_descriptor h : CGAL::halfedges_around_source(v, mesh)) {
-      const vertex_descriptor w = target(h, mesh);
-      for(const auto& [u, g] : neighbours)
-        if(u == w && v < w) {
-          parallel.push_back(g);
-          parallel.push_back(h);
-        }
-      neighbours.emplace_back(w, h);
-    }
+  for(const auto& [g, h] : parallel_halfedge_pairs(mesh)) {
+    parallel.push_back(g);
+    parallel.push_back(h);
   }
   auto length = [&](vertex_descriptor x, vertex_descriptor y) {
     const Vec3 d = difference(to_vec3(get(vpm, x)), to_vec3(get(vpm, y)));
@@ -176,6 +190,92 @@ std::size_t rotate_parallel_edges(Mesh& mesh, VertexPointMap vpm)
   return number_of_parallel_edges(mesh);
 }
 
+/// Whether removing the inner vertex v of valence 2 (`Euler::remove_center_vertex()`)
+/// merges its two faces into a simple polygon: they are distinct, share no corner but v
+/// and its two neighbours, and have at least five corners between them.
+template <class Mesh>
+bool removal_keeps_face_simple(typename boost::graph_traits<Mesh>::vertex_descriptor v, const Mesh& mesh)
+{
+  const auto h = halfedge(v, mesh), g = opposite(next(h, mesh), mesh);
+  if(is_border(h, mesh) || is_border(g, mesh) || face(h, mesh) == face(g, mesh) ||
+     degree(face(h, mesh), mesh) + degree(face(g, mesh), mesh) < 7)
+    return false;
+  std::set<typename boost::graph_traits<Mesh>::vertex_descriptor> corners;
+  for(auto w : CGAL::vertices_around_face(h, mesh))
+    corners.insert(w);
+  for(auto w : CGAL::vertices_around_face(g, mesh))
+    if(w != v && w != source(h, mesh) && w != target(next(h, mesh), mesh) && corners.count(w))
+      return false;
+  return true;
+}
+
+/// A pinch: an inner vertex x of valence 2 between two triangles (a, b, x) and (b, a, x).
+/// It is the dual of a primal digon with valence-3 ends whose two neighbouring faces
+/// meet again beyond both ends (two primal faces sharing two edges, around thin parts
+/// at coarse cells). The two edges a-b are parallel, and the two quads across them
+/// share more than the edge, so no rotation undoes them (`rotate_parallel_edges()`).
+/// The pinch is a disk bounded by the two edges: it is removed and the two edges are
+/// glued into one, which keeps the topology and the degrees of the other faces; a or b
+/// left with valence 2 then has its two faces merged (two quads into one quad), as the
+/// quad collapse does with doublets. Returns the number of pinches removed and lowers
+/// the counts of dual vertices and faces.
+template <class Mesh>
+std::size_t remove_pinches(Mesh& mesh, std::size_t& number_of_vertices, std::size_t& number_of_faces)
+{
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  using halfedge_descriptor = typename boost::graph_traits<Mesh>::halfedge_descriptor;
+  auto is_inner_doublet = [&](vertex_descriptor v) { return degree(v, mesh) == 2 && !is_border(v, mesh); };
+  // the halfedge across the side a-b of the triangle of h = a -> x
+  auto across_third_side = [&](halfedge_descriptor h) { return opposite(next(next(h, mesh), mesh), mesh); };
+  auto is_pinch = [&](vertex_descriptor x) { // x of valence 2: halfedges a -> x and b -> x
+    const halfedge_descriptor h = halfedge(x, mesh), g = opposite(next(h, mesh), mesh);
+    if(is_border(h, mesh) || is_border(g, mesh) || source(h, mesh) == source(g, mesh) ||
+       degree(face(h, mesh), mesh) != 3 || degree(face(g, mesh), mesh) != 3)
+      return false;
+    // the faces across the two edges a-b, which are glued into one: two faces other
+    // than the triangles (not a closed piece of two triangles)
+    const halfedge_descriptor one = across_third_side(h), other = across_third_side(g);
+    if(is_border(one, mesh) || is_border(other, mesh))
+      return false;
+    const auto outer = {face(one, mesh), face(other, mesh)};
+    return face(one, mesh) != face(other, mesh) &&
+           std::none_of(outer.begin(), outer.end(), [&](auto f) { return f == face(h, mesh) || f == face(g, mesh); });
+  };
+  // a worklist: the pinches, then the ends of removed pinches and the neighbours of
+  // removed doublets, whose valence went down (they may have become pinches)
+  std::vector<vertex_descriptor> work;
+  for(vertex_descriptor v : vertices(mesh))
+    if(is_inner_doublet(v) && is_pinch(v))
+      work.push_back(v);
+  std::set<vertex_descriptor> removed;
+  std::size_t removed_pinches = 0;
+  while(!work.empty()) {
+    const vertex_descriptor x = work.back();
+    work.pop_back();
+    if(removed.count(x) || !is_inner_doublet(x))
+      continue;
+    const halfedge_descriptor h = halfedge(x, mesh);
+    const vertex_descriptor a = source(h, mesh), b = target(next(h, mesh), mesh);
+    if(is_pinch(x)) {
+      // the two triangles become one 2-gon bounded by the two edges a-b, which is then
+      // joined with the face across one of them: the edges are glued
+      CGAL::Euler::join_face(CGAL::Euler::remove_center_vertex(h, mesh), mesh);
+      ++removed_pinches;
+      number_of_faces -= 2;
+    } else if(removal_keeps_face_simple(x, mesh)) {
+      CGAL::Euler::remove_center_vertex(h, mesh);
+      --number_of_faces;
+    } else {
+      continue;
+    }
+    removed.insert(x);
+    --number_of_vertices;
+    work.push_back(a);
+    work.push_back(b);
+  }
+  return removed_pinches;
+}
+
 /// Whether joining the two faces of halfedge h gives a face that visits each vertex
 /// once: the faces must be distinct and share no vertex but the ends of h.
 template <class Mesh>
@@ -192,6 +292,37 @@ bool join_keeps_face_simple(typename boost::graph_traits<Mesh>::halfedge_descrip
     if(v != source(h, mesh) && v != target(h, mesh) && corners.count(v))
       return false;
   return true;
+}
+
+/// The last resort for a pair of parallel edges that neither `remove_pinches()` nor
+/// `rotate_parallel_edges()` undoes (e.g. two triangles over the same three corners,
+/// glued along one edge, between two pairs): one of its edges is removed by joining
+/// its two faces, where that gives a simple polygon. The mesh then has a face with more
+/// corners (a pentagon for a triangle and a quad) but can be stored in a file. Returns
+/// the number of edges removed and lowers the count of faces.
+template <class Mesh>
+std::size_t join_across_parallel_edges(Mesh& mesh, std::size_t& number_of_faces)
+{
+  std::size_t joined = 0;
+  // one join per sweep: it may remove edges that other pairs listed (a few pairs at most)
+  for(bool progress = true; progress;) {
+    progress = false;
+    for(const auto& [g, h] : parallel_halfedge_pairs(mesh)) {
+      for(auto e : {g, h})
+        if(!is_border(edge(e, mesh), mesh) && join_keeps_face_simple(e, mesh)) {
+          CGAL::Euler::join_face(e, mesh);
+          progress = true;
+          break;
+        }
+      if(progress)
+        break;
+    }
+    if(progress) {
+      ++joined;
+      --number_of_faces;
+    }
+  }
+  return joined;
 }
 
 /// Removes the connected components that have a face that is not a simple polygon
@@ -356,7 +487,15 @@ builds the dual of the polygon mesh `primal` into `quads`: one vertex per primal
 face, one face per primal vertex (its incident faces in rotation order). When every
 primal vertex has valence 4, as in the output of `primal_remesh()`, every dual face is
 a quad. The ends of merged digons (valence 3, or 2 for a vertex in two digons) give
-triangles and 2-gons; they are joined across the merged edges into quads.
+triangles and 2-gons; they are joined across the merged edges into quads. Where two
+primal faces share two edges (around parts thinner than a cell), their dual vertices
+are joined by two parallel edges, which face-list files cannot store: a pair around a
+pinch (two triangles around a dual vertex of valence 2, the dual of a digon between
+the two faces) is glued into one edge and the pinch removed
+(`Dual_statistics::removed_pinches`); a pair between two quads has one of its edges
+rotated; a pair neither undoes loses one edge by joining its two faces where that
+gives a simple polygon (`Dual_statistics::joined_parallel_edges`); what is left is
+counted in `Dual_statistics::parallel_edges`.
 
 On a border (paper, section 7), the primal border is cut into chains at its vertices
 of valence 3 or more (the regular valence there, as from `primal_remesh()`); each
@@ -690,7 +829,12 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     --stats.dual_faces;
   }
   stats.dropped_pieces = faces_without_dual + internal::remove_pieces_with_non_simple_faces(quads, stats.dual_faces);
+  stats.removed_pinches = internal::remove_pinches(quads, stats.dual_vertices, stats.dual_faces);
   stats.parallel_edges = internal::rotate_parallel_edges(quads, out_vpm);
+  if(stats.parallel_edges > 0) {
+    stats.joined_parallel_edges = internal::join_across_parallel_edges(quads, stats.dual_faces);
+    stats.parallel_edges = internal::number_of_parallel_edges(quads);
+  }
   internal::collect_garbage_if_any(quads);
   for(auto f : faces(quads))
     (degree(f, quads) == 4 ? stats.quads : stats.non_quads) += 1;
