@@ -144,9 +144,10 @@ planes of both sides meet, it goes back onto the crease line, and at a corner on
 corner, which the paper's single line could not reach.
 
 A vertex whose tangent planes' points, in order, are the corners of a polygon that
-encloses nothing (a segment, or a tree of segments) stays where it is: `dualize()` gives those to the dual vertex of a primal face
-inside the zero-area strips of creases opened by `insert_crease_triangles()` (or
-where strips meet), and puts it on the crease. Its planes, whose normals are blends of
+encloses nothing (a segment, or a tree of segments) stays where it is: `dualize()`
+gives those to the dual vertex of a primal face inside the zero-area strips of
+creases opened by `insert_crease_triangles()` (or where strips meet), and puts it on
+the crease. Its planes, whose normals are blends of
 the two sides', would let the average of its neighbours pull it along or off the
 crease, across the notch of a concave corner, where the fold test below cannot see
 it: on CGAL's fandisk with its creases opened (\f$\mathbb{R}^6\f$, the whole
@@ -286,6 +287,8 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
     if(on_border[i])
       continue;
     on_face_without_area[i] = internal::planes_of_face_without_area(get(tangent_planes, v), scratch);
+    if(on_face_without_area[i])
+      continue; // it stays: no projection needed
     internal::Quadric quadric;
     quadric.add_planes(get(tangent_planes, v));
     projection[i] = internal::Quadric_projection(quadric, internal::quadric_truncation);
@@ -327,14 +330,14 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
         next_normal[i] = m == Vec3{{0, 0, 0}} ? normal[i] : m;
         continue;
       }
-      if(projection[i].constrained_directions() == 0 || m == Vec3{{0, 0, 0}}) { // nothing to project on
+      const bool stays = on_face_without_area[i] && m != Vec3{{0, 0, 0}}; // its normal follows
+      if(!stays && (projection[i].constrained_directions() == 0 || m == Vec3{{0, 0, 0}})) { // nothing to project on
         next_position[i] = position[i];
         next_normal[i] = normal[i];
         continue;
       }
-      next_position[i] = on_face_without_area[i]
-                             ? position[i]
-                             : projection[i].fit_nearest_planes(internal::clamped_to_points_box(p, planes), planes);
+      next_position[i] =
+          stays ? position[i] : projection[i].fit_nearest_planes(internal::clamped_to_points_box(p, planes), planes);
       next_normal[i] = m;
     }
     keep_faces_unfolded(face_corners, position, normal, next_position);

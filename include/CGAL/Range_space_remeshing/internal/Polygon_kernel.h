@@ -104,12 +104,11 @@ inline bool encloses_nothing(const std::vector<Vec3>& polygon, const Vec3& norma
 /// polygon that encloses nothing (`encloses_nothing()`: a segment, or a tree of segments
 /// where opened creases meet) is made of its sides: x goes to the nearest point of a
 /// side. x is returned as it is if the polygon has no kernel (a folded polygon) or no
-/// plane (no net area, rounding for a normal).
-inline Vec3 into_polygon_kernel(const std::vector<Vec3>& polygon, const Vec3& x)
+/// plane (no net area, rounding for a normal). `area` is the polygon's Newell normal.
+inline Vec3 into_polygon_kernel(const std::vector<Vec3>& polygon, const Vec3& area, const Vec3& x)
 {
   if(polygon.empty())
     return x;
-  const Vec3 area = newell_normal(polygon);
   if(polygon.size() < 3 || encloses_nothing(polygon, area))
     return closest_on_sides(polygon, x);
   if(has_no_net_area(polygon, area))
@@ -147,6 +146,11 @@ inline Vec3 into_polygon_kernel(const std::vector<Vec3>& polygon, const Vec3& x)
   return moved;
 }
 
+inline Vec3 into_polygon_kernel(const std::vector<Vec3>& polygon, const Vec3& x)
+{
+  return into_polygon_kernel(polygon, newell_normal(polygon), x);
+}
+
 /// The dual vertex of a primal face whose corners are `polygon`, on a surface whose
 /// normal there is `surface_normal` (the sum of the corners'), from the minimiser x of
 /// its planes: x moved into the polygon's kernel (`into_polygon_kernel()`), but where
@@ -156,14 +160,15 @@ inline Vec3 into_polygon_kernel(const std::vector<Vec3>& polygon, const Vec3& x)
 /// creases and at the corner, and their polygon, the remaining quarter, is the notch.
 inline Vec3 into_face(const std::vector<Vec3>& polygon, const Vec3& surface_normal, const Vec3& x)
 {
-  if(polygon.size() >= 3 && dot(newell_normal(polygon), surface_normal) < 0) {
+  const Vec3 area = newell_normal(polygon); // computed once, for both tests
+  if(polygon.size() >= 3 && dot(area, surface_normal) < 0) {
     Vec3 nearest = polygon.front();
     for(const Vec3& corner : polygon)
       if(dot(difference(corner, x), difference(corner, x)) < dot(difference(nearest, x), difference(nearest, x)))
         nearest = corner;
     return nearest;
   }
-  return into_polygon_kernel(polygon, x);
+  return into_polygon_kernel(polygon, area, x);
 }
 
 /// Whether the points of the tangent planes (three or more), in order, are the corners
