@@ -123,10 +123,11 @@ struct Dual_statistics
   /// vertices all have valence 2), removed
   std::size_t dropped_pieces = 0;
   /// pairs of distinct edges joining the same two vertices left in the dual (where two
-  /// primal faces share two edges, at coarse cell sizes, one edge of each pair is
-  /// rotated inside its two quads; this counts the pairs no rotation could undo):
-  /// valid in the halfedge structure, but a file format that stores faces as vertex
-  /// lists cannot keep them apart
+  /// primal faces share two edges, at coarse cell sizes; pinches are removed, one edge
+  /// of a pair between quads is rotated inside them, and a pair neither undoes is
+  /// joined, see below; this counts the pairs left, which none of that undid): valid
+  /// in the halfedge structure, but a file format that stores faces as vertex lists
+  /// cannot keep them apart
   std::size_t parallel_edges = 0;
   /// pinches removed: where two primal faces share two edges with a digon between them,
   /// the dual has two triangles around a vertex of valence 2 between two parallel edges;
