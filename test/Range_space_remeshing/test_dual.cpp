@@ -859,12 +859,13 @@ void test_fandisk_creases(const Mesh& fandisk)
             << num_vertices(sharp) << " vertices, RMS " << d_sharp.rms << ", Hausdorff " << d_sharp.max << std::endl;
   CHECK(std::abs(double(num_vertices(plain)) / 8000 - 1) < 0.03);
   CHECK(std::abs(double(num_vertices(sharp)) / 8000 - 1) < 0.03);
-  // Measured: RMS 1.3e-4 against 3.4e-4, Hausdorff 3.64e-3 against 3.70e-3 (with the
-  // default placement, the creased dual's was 5.3e-3). The Hausdorff margin is thin and
-  // does not hold at every size: at 4,000 to 16,000 vertices the RMS is lower at every
-  // size, the Hausdorff distance at three of six (quads across notches; see the manual).
-  CHECK(d_sharp.rms < 0.6 * d_plain.rms);
-  CHECK(d_sharp.max < d_plain.max);
+  // Measured: RMS 9.0e-5 against 3.4e-4, Hausdorff 2.65e-3 against 3.70e-3. Before the
+  // primal gave vertices inside opened creases one side's normal and the other side's
+  // plane (`vertex_crease_normal_map`) instead of a blend of both, 1.3e-4 and 3.64e-3:
+  // these bounds fail then. At 4,000 to 16,000 vertices the RMS and the Hausdorff
+  // distance are lower at every one of six sizes (see the manual).
+  CHECK(d_sharp.rms < 0.35 * d_plain.rms);
+  CHECK(d_sharp.max < 0.8 * d_plain.max);
 }
 
 int main(int argc, char** argv)

@@ -350,6 +350,8 @@ void test_view_map()
   CHECK(thrown);
 }
 
+void check_primal_normals_on_creases(const Mesh& creased);
+
 /// Creases: on a cube, every edge of its sides is a crease; the prepared mesh is the
 /// same surface (area, Euler characteristic) with zero-area strips along the 12 edges
 /// and a zero-area triangle at each of the 8 corners; the normals on each side are
@@ -381,6 +383,46 @@ void test_crease_triangles()
   std::cout << "  R^6 remesh of the creased cube: " << num_vertices(remesh) << " vertices, chi "
             << euler_characteristic(remesh) << std::endl;
   CHECK_EQ(euler_characteristic(remesh), 2L);
+  check_primal_normals_on_creases(creased);
+}
+
+/// A primal vertex inside a crease strip or a corner triangle gets one side's normal,
+/// not a blend of both (the normal of no surface), and the other side's normal through
+/// `vertex_crease_normal_map`; elsewhere that map holds the null vector. On the creased
+/// lattice cube [0, 3]^3 every side's normal is an axis, and two sides that meet are
+/// perpendicular.
+void check_primal_normals_on_creases(const Mesh& creased)
+{
+  Mesh primal;
+  auto normals = primal.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:normal").first;
+  auto crease_normals = primal.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:crease_normal").first;
+  RSR::primal_remesh(creased, primal,
+                     RSR::parameters::range_map(RSR::make_position_normal_range_map(creased, 1.0, 2.0)).grid_spacing(0.37),
+                     RSR::parameters::vertex_crease_normal_map(crease_normals, params::vertex_normal_map(normals)));
+  auto is_axis = [](const K::Vector_3& n) {
+    return std::abs(std::abs(n.x()) + std::abs(n.y()) + std::abs(n.z()) - 1) < 1e-12 &&
+           std::abs(n.squared_length() - 1) < 1e-12;
+  };
+  auto on_cube_edge = [](const Point& p) {
+    int at_side = 0;
+    for(int d = 0; d < 3; ++d)
+      at_side += std::abs(p[d]) < 1e-9 || std::abs(p[d] - 3) < 1e-9;
+    return at_side >= 2;
+  };
+  std::size_t off_axis = 0, with_crease_normal = 0, misplaced = 0;
+  for(auto v : vertices(primal)) {
+    off_axis += !is_axis(normals[v]);
+    if(crease_normals[v] == CGAL::NULL_VECTOR)
+      continue;
+    ++with_crease_normal;
+    misplaced += !is_axis(crease_normals[v]) || std::abs(crease_normals[v] * normals[v]) > 1e-12 ||
+                 !on_cube_edge(primal.point(v));
+  }
+  std::cout << "  primal of the creased cube: " << num_vertices(primal) << " vertices, " << with_crease_normal
+            << " inside creases, " << off_axis << " normals off the axes" << std::endl;
+  CHECK_EQ(off_axis, std::size_t(0));
+  CHECK(with_crease_normal >= 24); // at least two per cube edge
+  CHECK_EQ(misplaced, std::size_t(0));
 }
 
 /// Vertex normals of meshes at extreme scales: unit, or zero where there is no normal,

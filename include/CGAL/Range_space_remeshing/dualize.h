@@ -516,7 +516,9 @@ well placed. Its normal is the normalised average of the vertices' normals.
 \param primal a polygon mesh (any `FaceListGraph`), with or without border.
 \param quads receives the dual (appended); a `MutableFaceGraph`.
 \param np_in `vertex_point_map`, `vertex_normal_map` (unit normals of the primal
-  vertices; default: computed from the mesh), `dual_placement`, `vertex_color_map`
+  vertices; default: computed from the mesh), `vertex_crease_normal_map` (from
+  `primal_remesh()`: a vertex inside an opened crease adds the tangent plane of the
+  crease's other side to its faces' planes), `dual_placement`, `vertex_color_map`
   (colours of the primal vertices, `CGAL::IO::Color` or triples in [0, 1]).
 \param np_out `vertex_point_map`, `vertex_normal_map` (receives the dual normals),
   `vertex_color_map` (receives the average colour of each primal face),
@@ -582,6 +584,17 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
   for(vertex_descriptor v : vertices(primal)) {
     point_of[get(vertex_index, v)] = internal::to_vec3(get(vpm, v));
     normal_of[get(vertex_index, v)] = internal::normalized(primal_normal(v));
+  }
+  // a vertex inside an opened crease: the other side's normal, a second tangent plane
+  constexpr bool has_crease_normals =
+      !is_default_parameter<NamedParametersIn, internal_np::vertex_crease_normal_map_t>::value;
+  const auto crease_normal_map = choose_parameter(get_parameter(np_in, internal_np::vertex_crease_normal_map),
+                                                  CGAL::Constant_property_map<vertex_descriptor, int>(0));
+  std::vector<internal::Vec3> crease_normal_of;
+  if constexpr(has_crease_normals) {
+    crease_normal_of.resize(num_vertices(primal));
+    for(vertex_descriptor v : vertices(primal))
+      crease_normal_of[get(vertex_index, v)] = internal::normalized(internal::to_vec3(get(crease_normal_map, v)));
   }
 
   // colours: the average of the primal face's, where the primal has them (np_in) and
@@ -673,7 +686,11 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     planes.clear();
     color_sources.clear();
     for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, primal), primal)) {
-      planes.emplace_back(point_of[get(vertex_index, v)], normal_of[get(vertex_index, v)]);
+      const std::size_t i = get(vertex_index, v);
+      planes.emplace_back(point_of[i], normal_of[i]);
+      if constexpr(has_crease_normals)
+        if(crease_normal_of[i] != internal::Vec3{{0, 0, 0}})
+          planes.emplace_back(point_of[i], crease_normal_of[i]);
       if constexpr(wants_colors)
         color_sources.emplace_back(v, 1.); // weighted equally: the face's mean colour
     }

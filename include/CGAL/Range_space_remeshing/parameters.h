@@ -62,6 +62,7 @@ enum grid_origin_t { grid_origin };
 enum seed_faces_t { seed_faces };
 enum dual_placement_t { dual_placement };
 enum vertex_tangent_planes_map_t { vertex_tangent_planes_map };
+enum vertex_crease_normal_map_t { vertex_crease_normal_map };
 enum quad_collapse_t { quad_collapse };
 enum check_topology_t { check_topology };
 enum preserve_topology_t { preserve_topology };
@@ -97,6 +98,12 @@ CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(dual_placement)
 /// A read-write property map, dual vertex -> `Tangent_planes`: the tangent planes
 /// of the primal face, written by `dualize()` and read by `relax_on_tangent_planes()`.
 CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(vertex_tangent_planes_map)
+/// A property map, primal vertex -> vector: at a vertex that `primal_remesh()` puts
+/// inside an opened crease (a zero-area triangle of `insert_crease_triangles()`), the
+/// unit normal of the crease's other side, the null vector elsewhere. Written by
+/// `primal_remesh()` (`np_out`), read by `dualize()` (`np_in`), which gives such a
+/// vertex the tangent planes of both sides: a crease, not a bend.
+CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(vertex_crease_normal_map)
 /// Whether `remesh()` runs `collapse_quads()` between the dual and the relaxation
 /// (`bool`). Default: `true`.
 CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(quad_collapse)

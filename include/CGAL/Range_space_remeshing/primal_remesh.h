@@ -396,9 +396,13 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
       \cgalParamDefault{`Range_space_traits<D>`}
     \cgalParamNEnd
   \cgalNamedParamsEnd
-\param np_out optional named parameters for `out`: `vertex_point_map`, and
+\param np_out optional named parameters for `out`: `vertex_point_map`,
   `vertex_normal_map` (a writable map receiving unit normals interpolated from the
-  input's vertex normals, those of `np_in` if given).
+  input's vertex normals, those of `np_in` if given; inside a zero-area triangle whose
+  corners include copies of one point, as `insert_crease_triangles()` makes, the
+  normal of the side with the larger weight, not a blend of both), and
+  `vertex_crease_normal_map` (a writable map receiving, at such a vertex, the normal
+  of the other side, and the null vector elsewhere; for `dualize()`).
 
 \returns what the run did, including per-stage times.
 \throws Remeshing_error on an empty mesh, a non-triangle face, a non-finite map value or cell size, a cell size so small that

@@ -147,8 +147,8 @@ A vertex whose tangent planes' points, in order, are the corners of a polygon th
 encloses nothing (a segment, or a tree of segments) stays where it is: `dualize()`
 gives those to the dual vertex of a primal face inside the zero-area strips of
 creases opened by `insert_crease_triangles()` (or where strips meet), and puts it on
-the crease. Its planes, whose normals are blends of
-the two sides', would let the average of its neighbours pull it along or off the
+the crease. Its planes (the two sides', or blends of
+them where the primal had no crease normals) would let the average of its neighbours pull it along or off the
 crease, across the notch of a concave corner, where the fold test below cannot see
 it: on CGAL's fandisk with its creases opened (\f$\mathbb{R}^6\f$, the whole
 pipeline, 4,000 to 16,000 quads) the largest distance to the input went down at

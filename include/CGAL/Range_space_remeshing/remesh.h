@@ -79,7 +79,9 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
       !CGAL::parameters::is_default_parameter<NamedParametersOut, CGAL::internal_np::vertex_color_map_t>::value;
   Primal primal;
   auto primal_normals = primal.add_property_map<typename Primal::Vertex_index, Vector>("v:normal").first;
-  const auto primal_out = CGAL::parameters::vertex_normal_map(primal_normals);
+  auto crease_normals = primal.add_property_map<typename Primal::Vertex_index, Vector>("v:crease_normal").first;
+  const auto primal_out = parameters::vertex_crease_normal_map(crease_normals,
+                                                               CGAL::parameters::vertex_normal_map(primal_normals));
 
   const Out_VPM out_vpm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
                                            get_property_map(CGAL::vertex_point, quads));
@@ -87,7 +89,9 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
   auto normals = get(CGAL::dynamic_vertex_property_t<Out_vector>(), quads);
   const Dual_placement placement =
       choose_parameter(get_parameter(np, internal_np::dual_placement), Dual_placement::QEM);
-  const auto dual_in = parameters::dual_placement(placement, CGAL::parameters::vertex_normal_map(primal_normals));
+  const auto dual_in = parameters::dual_placement(
+      placement, parameters::vertex_crease_normal_map(crease_normals,
+                                                      CGAL::parameters::vertex_normal_map(primal_normals)));
   const auto dual_out = parameters::vertex_tangent_planes_map(
       planes, CGAL::parameters::vertex_normal_map(normals).vertex_point_map(out_vpm));
   auto finish = [&] {

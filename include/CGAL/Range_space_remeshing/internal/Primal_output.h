@@ -12,6 +12,7 @@
 // triangle at the crossing point.
 
 #include <CGAL/Range_space_remeshing/Statistics.h>
+#include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Color.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
@@ -29,6 +30,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <initializer_list>
 #include <vector>
 
 namespace CGAL {
@@ -88,6 +90,50 @@ private:
   VertexIndexMap vertex_index_;
 };
 
+/// The normals of the two sides of a crease at a point inside it; `other` is the null
+/// vector where the point is on one side only.
+struct Normals_at_point
+{
+  Vec3 own, other;
+};
+
+/// The normals at the point of barycentric coordinates `w` in a triangle. In a triangle
+/// with two corners at the same point (one that `insert_crease_triangles()` puts along
+/// a crease, or at a corner), corners at the same point are copies of one vertex on
+/// different sides of the crease: a blend of their normals is the normal of no surface
+/// there, and tangent planes built from it make a flat side next to a crease look
+/// curved. Such a point takes the normal of the side with the larger weight, and the
+/// other side's as `other` (a side: a copy and the corner elsewhere whose normal is
+/// nearer its own; at a corner, where all three coincide, each copy is a side).
+template <class PointArray>
+Normals_at_point normals_on_sides(const PointArray& points, const std::array<Vec3, 3>& normals,
+                                  const std::array<double, 3>& w)
+{
+  auto blend = [&](std::initializer_list<int> corners) {
+    Vec3 n = {{0, 0, 0}};
+    for(int c : corners)
+      for(int d = 0; d < 3; ++d)
+        n[d] += w[c] * normals[c][d];
+    return n;
+  };
+  const bool same01 = points[0] == points[1], same12 = points[1] == points[2], same02 = points[0] == points[2];
+  if(!same01 && !same12 && !same02)
+    return {blend({0, 1, 2}), {{0, 0, 0}}};
+  if(same01 && same12) {
+    std::array<int, 3> by_weight = {{0, 1, 2}};
+    std::sort(by_weight.begin(), by_weight.end(), [&](int a, int b) { return w[a] > w[b] || (w[a] == w[b] && a < b); });
+    return {normals[by_weight[0]], normals[by_weight[1]]};
+  }
+  const int lone = same01 ? 2 : (same12 ? 0 : 1);
+  int partner = (lone + 1) % 3, other = (lone + 2) % 3;
+  if(dot(normals[other], normals[lone]) > dot(normals[partner], normals[lone]))
+    std::swap(partner, other);
+  const Vec3 lone_side = normalized(blend({lone, partner}));
+  if(w[lone] + w[partner] >= w[other])
+    return {lone_side, normals[other]};
+  return {normals[other], lone_side};
+}
+
 template <class PolygonMesh>
 void reserve_if_possible(PolygonMesh&, std::size_t, std::size_t, std::size_t)
 {}
@@ -127,11 +173,17 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
                                               CGAL::internal_np::vertex_normal_map_t>::value;
   auto normal_map = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_normal_map),
                                      CGAL::Constant_property_map<out_vertex, Out_vector>());
+  constexpr bool wants_crease_normals =
+      !is_default_parameter<NamedParametersOut, internal_np::vertex_crease_normal_map_t>::value;
+  auto crease_normal_map = choose_parameter(get_parameter(np_out, internal_np::vertex_crease_normal_map),
+                                            CGAL::Constant_property_map<out_vertex, Out_vector>());
+  constexpr bool needs_corner_normals = wants_normals || wants_crease_normals;
   Lazy_vertex_normals<TriangleMesh, VPM, VertexIndexMap> input_normals(tm, vpm, vertex_index);
   // the caller's input normals, if given (np_in): interpolated instead of computed
   constexpr bool has_input_normals =
       !is_default_parameter<NamedParametersIn, CGAL::internal_np::vertex_normal_map_t>::value;
   using in_vertex = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using In_point = typename boost::property_traits<VPM>::value_type;
   const auto given_normals = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_normal_map),
                                               CGAL::Constant_property_map<in_vertex, Vec3>());
   // colours: sampled where the input has them (np_in) and the output wants them (np_out)
@@ -148,7 +200,7 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
   const std::uint32_t none = Primal_complex::none;
   reserve_if_possible(out, vertices.size(), complex.halfedges().size() / 2,
                       complex.face_halfedges().size());
-  if constexpr(wants_normals && !has_input_normals) // each output vertex reads three corners' normals
+  if constexpr(needs_corner_normals && !has_input_normals) // each output vertex reads three corners' normals
     if(3 * 40 * vertices.size() >= num_vertices(tm))
       input_normals.compute_all();
   std::vector<out_vertex> vertex_of(vertices.size());
@@ -158,22 +210,21 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
       continue;
     const auto w = tracer.barycentric_coordinates(vertices[v]);
     const auto h0 = halfedge(tracer.face_of(vertices[v]), tm);
-    const auto corners = {source(h0, tm), target(h0, tm), target(next(h0, tm), tm)};
-    std::array<double, 3> p = {{0, 0, 0}}, n = {{0, 0, 0}}, rgb = {{0, 0, 0}};
+    const std::array<in_vertex, 3> corners = {{source(h0, tm), target(h0, tm), target(next(h0, tm), tm)}};
+    const std::array<In_point, 3> corner_points = {{get(vpm, corners[0]), get(vpm, corners[1]), get(vpm, corners[2])}};
+    std::array<double, 3> p = {{0, 0, 0}}, rgb = {{0, 0, 0}};
+    std::array<Vec3, 3> corner_normals;
     int c = 0;
     for(auto corner : corners) {
-      const auto& q = get(vpm, corner);
+      const auto& q = corner_points[c];
       p[0] += w[c] * CGAL::to_double(q.x());
       p[1] += w[c] * CGAL::to_double(q.y());
       p[2] += w[c] * CGAL::to_double(q.z());
-      if constexpr(wants_normals) {
-        Vec3 nc;
+      if constexpr(needs_corner_normals) {
         if constexpr(has_input_normals)
-          nc = to_vec3(get(given_normals, corner));
+          corner_normals[c] = to_vec3(get(given_normals, corner));
         else
-          nc = input_normals(corner);
-        for(int d = 0; d < 3; ++d)
-          n[d] += w[c] * nc[d];
+          corner_normals[c] = input_normals(corner);
       }
       if constexpr(wants_colors) {
         const Vec3 corner_rgb = to_rgb(get(input_colors, corner));
@@ -184,9 +235,11 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
     }
     const out_vertex ov = add_vertex(out);
     put(out_vpm, ov, Out_point(p[0], p[1], p[2]));
-    if constexpr(wants_normals) {
-      const Vec3 unit = normalized(n); // zero-area corners: the zero vector
+    if constexpr(needs_corner_normals) {
+      const Normals_at_point normals = normals_on_sides(corner_points, corner_normals, w);
+      const Vec3 unit = normalized(normals.own); // zero-area corners: the zero vector
       put(normal_map, ov, Out_vector(unit[0], unit[1], unit[2]));
+      put(crease_normal_map, ov, Out_vector(normals.other[0], normals.other[1], normals.other[2]));
     }
     if constexpr(wants_colors)
       put(output_colors, ov, from_rgb<Out_color>(rgb));

@@ -435,8 +435,8 @@ inline Vec3 Quadric::minimiser(const Vec3& mass_point, double truncation) const
 
 /// Eigenvalues above this fraction of the largest may still be constrained directions:
 /// where two creases meet at a corner, the planes of the points along them pin the
-/// corner, but with an eigenvalue of a few hundredths only (the normals of a crease's
-/// points blend the normals of its two sides).
+/// corner, but with an eigenvalue of a few hundredths only (where the normals of a
+/// crease's points blend the normals of its two sides: no `vertex_crease_normal_map`).
 constexpr double sharp_truncation = 0.001;
 
 /// The bounding box of the planes' points, grown on each side by a hundredth of its
@@ -472,8 +472,8 @@ bool is_in_points_box(const Vec3& x, const PlaneRange& planes)
 /// at `sharp_truncation` where that lands in the points' box (a corner or a crease line
 /// that the planes pin), at `quadric_truncation` otherwise (the weak directions then
 /// come from curvature or noise, and their minimiser lies outside), and then clamped
-/// into the box: the blended normals of the planes around a convex corner of three
-/// opened creases can pin a point beyond the corner, outside the solid.
+/// into the box: the planes around a convex corner of three opened creases can pin a
+/// point beyond the corner, outside the solid.
 template <class PlaneRange>
 Vec3 sharp_feature_minimiser(const PlaneRange& planes, const Vec3& x)
 {
