@@ -1285,9 +1285,11 @@ public:
   {
     std::size_t loops = 0;
     std::vector<std::uint32_t> loop;
-    // the segments of the loops found: a face several loops cross is met again
-    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> found; // face -> (P, level) keys
     auto key = [](int P, std::int32_t level) { return (std::uint64_t(std::uint32_t(level)) << 8) | std::uint64_t(P); };
+    // the segments of the loops found: a face several loops cross is met again. The
+    // keys keep all their 64 bits (in 32, a negative level lost its high bits, and a
+    // loop was found once more from each of its faces another loop crosses).
+    std::unordered_map<std::uint32_t, std::vector<decltype(key(0, 0))>> found; // face -> keys
     auto is_found = [&](std::uint32_t f, int P, std::int32_t level) {
       const auto it = found.find(f);
       return it != found.end() && std::find(it->second.begin(), it->second.end(), key(P, level)) != it->second.end();

@@ -270,13 +270,29 @@ private:
 
   // ---------------------------------------------------------- cells
 
+  /// A list of cells keeps each once by a search per insertion up to this size; past
+  /// it, repeats are let in and removed once, by `remove_repeats()`. A face of a fine
+  /// grid (the Gauss map at a crease) meets tens of thousands of cells: a search per
+  /// insertion made that quadratic (minutes for one face), a sort of every list cost
+  /// the common case, a face in a cell or two, 40 % more.
+  static constexpr std::size_t searched_cells = 16;
+
   static void add_once(std::vector<Levels>& cells, const Levels& c)
   {
-    if(std::find(cells.begin(), cells.end(), c) == cells.end())
+    if(cells.size() > searched_cells || std::find(cells.begin(), cells.end(), c) == cells.end())
       cells.push_back(c);
   }
 
-  /// The cells the open edge from vertex a to vertex b meets, but for its ends'.
+  static void remove_repeats(std::vector<Levels>& cells)
+  {
+    if(cells.size() <= searched_cells)
+      return;
+    std::sort(cells.begin(), cells.end());
+    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+  }
+
+  /// The cells the open edge from vertex a to vertex b meets, but for its ends'; once
+  /// `remove_repeats()` has run.
   void add_crossing_cells(std::uint32_t a, std::uint32_t b, std::vector<Levels>& cells) const
   {
     const Levels &ca = tracer_.ceiling_of(a), &cb = tracer_.ceiling_of(b);
@@ -289,15 +305,17 @@ private:
       }
   }
 
-  /// The cells the closed edge from vertex a to vertex b meets.
+  /// The cells the closed edge from vertex a to vertex b meets, each once.
   void cells_of_edge(std::uint32_t a, std::uint32_t b, std::vector<Levels>& cells) const
   {
     cells.clear();
     add_once(cells, cell_of_vertex(a));
     add_once(cells, cell_of_vertex(b));
     add_crossing_cells(a, b, cells);
+    remove_repeats(cells);
   }
 
+  /// The cells the face meets, each once.
   void cells_of_face(std::uint32_t f, std::vector<Levels>& cells) const
   {
     cells.clear();
@@ -316,6 +334,7 @@ private:
         add_once(cells, c);
       }
     }
+    remove_repeats(cells);
   }
 
   /// The cell of the border piece that starts at boundary vertex v going forward:
@@ -441,6 +460,7 @@ private:
       }
     }
     std::vector<std::uint8_t> in_region(number_of_faces_, 0);
+    std::vector<std::uint8_t> vertex_counted(tracer_.number_of_input_vertices(), 0);
     std::vector<Levels> cells;
     for(auto& entry : seeds) {
       const Levels& c = entry.first;
@@ -474,14 +494,16 @@ private:
           }
         }
         for(int e = 0; e < 3; ++e)
-          if(cell_of_vertex(corners[e]) == c &&
-             std::find(counted_vertices.begin(), counted_vertices.end(), corners[e]) == counted_vertices.end()) {
+          if(cell_of_vertex(corners[e]) == c && !vertex_counted[corners[e]]) {
+            vertex_counted[corners[e]] = 1;
             counted_vertices.push_back(corners[e]);
             ++excess[c];
           }
       }
       for(std::uint32_t f : region)
         in_region[f] = 0;
+      for(std::uint32_t v : counted_vertices)
+        vertex_counted[v] = 0;
     }
     const Cell_map seeded = excess;
     add_border_pieces(excess, &seeded);
