@@ -8,6 +8,9 @@ cd "$(dirname "$0")/.."
 bash scripts/install_dependencies.sh
 export CCACHE_DIR="${CCACHE_DIR:-$HOME/.cache/ccache}"
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}" # cache hits across checkouts (CI clones afresh)
+# -g builds hash the working directory unless told not to: without this, a clone in
+# another folder (as CI makes) recompiles everything
+export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
 flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined"
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="$flags" \
       -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
