@@ -6,6 +6,7 @@
 #include "test_support.h"
 
 #include <CGAL/Range_space_remeshing/Gauss_range_map.h>
+#include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 #include <CGAL/Range_space_remeshing/Topology_defect.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 
@@ -118,9 +119,10 @@ struct Checked_run
 
 /// The primal remesh with the topology check (or preservation), the invariants of
 /// remesh_and_check(), and what the check says checked against the output itself.
-/// `base`: the named parameters of the run (cell size, map).
+/// `base`: the named parameters of the run (cell size, map into R^dimension).
 template <class NamedParameters>
-Checked_run run_checked_with(const Mesh& input, const NamedParameters& base, bool preserve = false)
+Checked_run run_checked_with(const Mesh& input, const NamedParameters& base, bool preserve = false,
+                             std::size_t dimension = 3)
 {
   Checked_run run;
   auto collect = [&](const Defect& d) { run.defects.push_back(d); };
@@ -138,7 +140,7 @@ Checked_run run_checked_with(const Mesh& input, const NamedParameters& base, boo
   CHECK_EQ(run.stats.uncrossed_border_cycles, run.count(Kind::LOST_BORDER_CYCLE));
   for(const Defect& d : run.defects) {
     CHECK(!d.input_faces.empty());
-    CHECK_EQ(d.cell.size(), std::size_t(3));
+    CHECK_EQ(d.cell.size(), dimension);
   }
   // The check's promise: when it finds nothing, the output has the input's topology.
   if(run.stats.topology_preserved()) {
@@ -396,6 +398,37 @@ void test_loops_at_negative_levels(const std::string& mesh_dir)
   }
 }
 
+/// The check on CGAL's meshes under the maps with normals, at a fine and a coarse
+/// cell: it runs, and what it says of the output holds (run_checked_with()). The suite
+/// ran the check under the identity map only; maps with normals bring negative levels
+/// (test_loops_at_negative_levels()), faces across many cells and, in R^6, cells of
+/// six coordinates.
+void test_maps_with_normals(const std::string& mesh_dir)
+{
+  for(const char* name : {"bunny00", "fandisk", "elephant-with-holes"}) {
+    Mesh mesh;
+    if(!read_sample_mesh(mesh_dir, name, mesh))
+      return;
+    const double diagonal = bbox_diagonal(mesh);
+    for(double h : {0.02, 0.06}) {
+      const std::string where = std::string(name) + ", h = " + std::to_string(h);
+      try {
+        const Checked_run r6 = run_checked_with(
+            mesh, RSR::parameters::range_map(RSR::make_position_normal_range_map(mesh, 1.0, 0.1 * diagonal))
+                      .grid_spacing(h * diagonal),
+            false, 6);
+        print((where + ", R^6").c_str(), h * diagonal, r6.stats);
+        const Checked_run gauss =
+            run_checked_with(mesh, RSR::parameters::range_map(RSR::make_gauss_range_map(mesh)).grid_spacing(5 * h));
+        print((where + ", Gauss map").c_str(), 5 * h, gauss.stats);
+      } catch(const std::exception& e) {
+        std::cerr << where << ": " << e.what() << std::endl;
+        CHECK(false);
+      }
+    }
+  }
+}
+
 void test_refined_elephant(const std::string& mesh_dir)
 {
   Mesh elephant;
@@ -416,6 +449,7 @@ int main(int argc, char** argv)
   test_no_false_alarm(mesh_dir);
   test_elephant_with_holes(mesh_dir);
   test_loops_at_negative_levels(mesh_dir);
+  test_maps_with_normals(mesh_dir);
   test_refined_elephant(mesh_dir);
   return report("test_topology");
 }
