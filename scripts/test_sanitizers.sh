@@ -17,8 +17,7 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="$
       -DBUILD_TESTING=ON -DRANGE_SPACE_REMESHING_BUILD_EXAMPLES=ON
 # the tests and the command-line program; the examples and the installation test
 # add no code of the library that the suite does not already run
-targets=$(sed -n 's/^rsr_add_test(\([a-z_0-9]*\).*/\1/p' test/Range_space_remeshing/CMakeLists.txt)
-cmake --build build-sanitize -j "$(nproc)" --target $targets fuzz_remesh_replay range_space_remesh
+cmake --build build-sanitize -j "$(nproc)" --target rsr_test_programs
 # a huge count in a file makes CGAL's readers ask for exabytes: std::bad_alloc, handled
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1:allocator_may_return_null=1
 export UBSAN_OPTIONS="halt_on_error=1:print_stacktrace=1:suppressions=$PWD/test/Range_space_remeshing/ubsan.supp"
