@@ -11,7 +11,9 @@ export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}" # cache hits across checkouts (C
 # -g builds hash the working directory unless told not to: without this, a clone in
 # another folder (as CI makes) recompiles everything
 export CCACHE_NOHASHDIR="${CCACHE_NOHASHDIR:-1}"
-flags="-O1 -g -fno-omit-frame-pointer -fsanitize=address,undefined"
+# -g1 (line tables): the reports' stack traces name files and lines, and a translation
+# unit compiles in about 2/3 of the time of -g (fuzz_remesh.cpp: 415 s against 602 s)
+flags="-O1 -g1 -fno-omit-frame-pointer -fsanitize=address,undefined"
 cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Debug -DCMAKE_CXX_FLAGS_DEBUG="$flags" \
       -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" \
       -DBUILD_TESTING=ON -DRANGE_SPACE_REMESHING_BUILD_EXAMPLES=ON

@@ -278,8 +278,14 @@ void test_errors()
   CHECK(throws_remeshing_error(
       [&] { RSR::primal_remesh(sphere, out, params::grid_spacing(0.01).maximum_number(1000)); }, refusal));
   CHECK(throws_remeshing_error([&] { RSR::primal_remesh(sphere, out, params::grid_spacing(3e-4)); }, refusal));
+  // one face holding about 1e10 vertices: refused before its scan builds any
+  Mesh one_triangle;
+  one_triangle.add_face(one_triangle.add_vertex(Point(0, 0, 0)), one_triangle.add_vertex(Point(1, 0, 0)),
+                        one_triangle.add_vertex(Point(0, 1, 1)));
+  CHECK(throws_remeshing_error([&] { RSR::primal_remesh(one_triangle, out, params::grid_spacing(1e-5)); }, refusal));
   // A cap above the estimate (7,396 for 7,378 vertices) that the scan's bound reaches
-  // late (after 6,338 vertices): the scan goes on after the estimate, to the same output.
+  // on the way (after 2,902 vertices): the scan goes on after the estimate, to the
+  // same output.
   Mesh uncapped, capped;
   const auto uncapped_stats = RSR::primal_remesh(sphere, uncapped, params::grid_spacing(0.05));
   RSR::primal_remesh(sphere, capped,

@@ -59,8 +59,8 @@ constexpr double infinity = std::numeric_limits<double>::infinity();
 constexpr double maximum_lattice_coordinate = 1 << 29;
 
 // The sequential complete scan estimates the output size (a pass over all faces)
-// only once a bound of it reaches this many vertices: below, building them costs
-// less than the estimate would on every run.
+// only once a bound of the vertices it builds reaches this many: below, building them
+// costs less than the estimate would on every run.
 constexpr double vertices_built_before_estimate = 1 << 20;
 
 template <int D>
@@ -151,10 +151,11 @@ public:
   /// The complete scan on this thread: `scan_face()` over `faces(tm)`, after
   /// `map_all_vertices()`. Refuses an output whose expected size
   /// (`expected_number_of_vertices()`) exceeds the cap before it is built, without
-  /// the pass over all faces that this estimate takes on most runs: a bound of it,
-  /// summed during the scan, has to reach `vertices_built_before_estimate` (or the
-  /// cap, if lower) first. Only then is the estimate made, once; if it is above the
-  /// cap, at most about that many vertices were built for nothing.
+  /// the pass over all faces that this estimate takes on most runs: a bound of the
+  /// vertices built, summed before each face is scanned, has to reach
+  /// `vertices_built_before_estimate` (or the cap, if lower) first. Only then is the
+  /// estimate made, once; if it is above the cap, at most about that many vertices
+  /// were built for nothing, however large one face is.
   void scan_all_faces()
   {
     const double cap = double(maximum_vertices_);
@@ -163,14 +164,18 @@ public:
     bool checked = false;
     for(face_descriptor f : faces(tm_)) {
       const Triangle t = load_face(f);
-      if(!checked) {
-        bound += expected_vertices_bound(t);
-        if(bound_may_reach(bound, check_at)) {
-          checked = true;
-          refuse_if_expected_above(cap);
+      if(!in_one_cell(t)) {
+        const Crossed_levels levels = crossed_levels(t);
+        if(!checked) {
+          bound += vertices_bound(levels);
+          if(bound_may_reach(bound, check_at)) {
+            checked = true;
+            refuse_if_expected_above(cap);
+          }
         }
+        scan_crossed_levels_of(t, levels);
       }
-      scan_triangle(t);
+      create_border_crossings_of(t.face_id);
     }
   }
 
@@ -260,11 +265,12 @@ public:
       for(std::size_t c = range.begin(); c != range.end(); ++c)
         for(std::size_t position = c * chunk; position < (std::min)(n, (c + 1) * chunk); ++position) {
           const Triangle t = load(all_face_ids_[position]); // reads only: all mapped and recorded
-          if(*t.c[0] == *t.c[1] && *t.c[1] == *t.c[2])
+          if(in_one_cell(t))
             continue;
+          const Crossed_levels levels = crossed_levels(t);
           if(untraced_pieces_) // the task's own entry
-            untraced_pieces_[t.face_id] += number_of_crossed_hyperplanes(t);
-          scan_crossed_levels(t, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
+            untraced_pieces_[t.face_id] += levels.hyperplanes;
+          scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
             found[c].push_back(
                 {std::uint32_t(position), std::int8_t(i), std::int8_t(j), std::int8_t(o), k, m});
           });
@@ -310,8 +316,8 @@ public:
       refuse_if_expected_above(double(maximum_vertices_));
   }
 
-  /// Whether a sum of `expected_vertices_bound()` may reach `level`, with a wide
-  /// margin for the rounding of the sum and of the estimate.
+  /// Whether a sum of bounds (`expected_vertices_bound()`, `vertices_bound()`) may
+  /// reach `level`, with a wide margin for the rounding of the sum and of the estimate.
   static bool bound_may_reach(double bound, double level) { return 1.01 * bound >= level; }
 
   /// Scans the faces reachable from `seed` across edges, nearest first, until one
@@ -438,6 +444,16 @@ private:
     std::array<const Levels*, 3> c;  // their ceilings
   };
 
+  /// The lattice levels a triangle strictly crosses, per axis.
+  struct Crossed_levels
+  {
+    // level k + eps lies strictly between lo and hi iff ceil(lo) <= k <= ceil(hi) - 1
+    Levels first, last;
+    std::array<int, D> axes;      // the axes with a crossed level, increasing
+    int number_of_axes = 0;
+    std::int32_t hyperplanes = 0; // crossed levels over all axes: the hyperplane segments in the triangle
+  };
+
   struct Wall
   {
     int axis = -1;
@@ -483,15 +499,19 @@ private:
     Point_d& x = mapped_vertices_[id].u;
     Levels& c = mapped_vertices_[id].ceiling;
     for(int q = 0; q < D; ++q) {
-      if(!std::isfinite(f[q]))
-        throw Remeshing_error("the range map gives a NaN or infinite value at input vertex " +
-                              std::to_string(id));
       x[q] = (f[q] - origin_[q]) / cell_size_;
-      if(!(std::abs(x[q]) < maximum_lattice_coordinate))
-        throw Remeshing_error("the cell size is too small for the range of the map: "
-                              "more than 2^29 cells along one axis");
+      if(!(std::abs(x[q]) < maximum_lattice_coordinate)) // NaN too: one test on the common path
+        refuse_coordinate(f[q], id);
       c[q] = ceil_to_int(x[q]);
     }
+  }
+
+  [[noreturn]] static void refuse_coordinate(double value, std::uint32_t id)
+  {
+    if(!std::isfinite(value))
+      throw Remeshing_error("the range map gives a NaN or infinite value at input vertex " + std::to_string(id));
+    throw Remeshing_error("the cell size is too small for the range of the map: "
+                          "more than 2^29 cells along one axis");
   }
 
   const Face_record& record(std::uint32_t face_id)
@@ -586,16 +606,54 @@ private:
   /// Finds every intersection vertex of the triangle and queues it.
   void scan_triangle(const Triangle& t)
   {
-    // Most triangles lie in one lattice cell (equal ceilings at the three corners):
-    // no lattice level is crossed, so there is no intersection vertex to look for.
-    if(!(*t.c[0] == *t.c[1] && *t.c[1] == *t.c[2])) {
-      if(untraced_pieces_)
-        untraced_pieces_[t.face_id] += number_of_crossed_hyperplanes(t);
-      scan_crossed_levels(t, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
-        find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
-      });
-    }
+    if(!in_one_cell(t))
+      scan_crossed_levels_of(t, crossed_levels(t));
     create_border_crossings_of(t.face_id);
+  }
+
+  void scan_crossed_levels_of(const Triangle& t, const Crossed_levels& levels)
+  {
+    if(untraced_pieces_)
+      untraced_pieces_[t.face_id] += levels.hyperplanes;
+    scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
+      find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
+    });
+  }
+
+  /// Whether the three corners have the same ceilings, so that no lattice level is
+  /// crossed and the triangle holds no intersection vertex: true of most triangles.
+  /// Without branches or a library call (std::array's == calls memcmp), as it is
+  /// asked of every face.
+  static bool in_one_cell(const Triangle& t)
+  {
+    const Levels &c0 = *t.c[0], &c1 = *t.c[1], &c2 = *t.c[2];
+    std::int32_t differ = 0;
+    for(int q = 0; q < D; ++q)
+      differ |= (c0[q] ^ c1[q]) | (c1[q] ^ c2[q]);
+    return differ == 0;
+  }
+
+  static Crossed_levels crossed_levels(const Triangle& t)
+  {
+    Crossed_levels levels;
+    // the minima and maxima first, in their own loop: it vectorizes
+    for(int q = 0; q < D; ++q) {
+      levels.first[q] = lowest_ceiling(t, q);
+      levels.last[q] = highest_ceiling(t, q) - 1;
+    }
+    for(int q = 0; q < D; ++q) {
+      levels.hyperplanes += levels.last[q] + 1 - levels.first[q];
+      if(levels.first[q] <= levels.last[q])
+        levels.axes[levels.number_of_axes++] = q;
+    }
+    return levels;
+  }
+
+  /// An upper bound of the vertices the scan of a triangle creates: one per grid edge
+  /// {x_i = k, x_j = m} of crossed levels, at most (sum of the crossed levels)^2 / 2.
+  static double vertices_bound(const Crossed_levels& levels)
+  {
+    return 0.5 * double(levels.hyperplanes) * double(levels.hyperplanes);
   }
 
   Triangle load(std::uint32_t face_id)
@@ -615,21 +673,12 @@ private:
   /// of the levels it strictly crosses, tested exactly (see `scan_face()`).
   /// Calls `found(i, j, k, m, orientation)` for each, in a fixed order.
   template <class Found>
-  void scan_crossed_levels(const Triangle& t, const Found& found) const
+  void scan_crossed_levels(const Triangle& t, const Crossed_levels& levels, const Found& found) const
   {
-    std::array<std::int32_t, D> first, last; // lattice levels strictly crossed, per axis
-    int crossed_axes[D];
-    int number_of_crossed_axes = 0;
-    for(int q = 0; q < D; ++q) {
-      // level k + eps lies strictly between lo and hi iff ceil(lo) <= k <= ceil(hi) - 1
-      first[q] = lowest_ceiling(t, q);
-      last[q] = highest_ceiling(t, q) - 1;
-      if(first[q] <= last[q])
-        crossed_axes[number_of_crossed_axes++] = q;
-    }
-    for(int a = 0; a < number_of_crossed_axes; ++a)
-      for(int b = a + 1; b < number_of_crossed_axes; ++b) {
-        const int i = crossed_axes[a], j = crossed_axes[b];
+    const Levels &first = levels.first, &last = levels.last;
+    for(int a = 0; a < levels.number_of_axes; ++a)
+      for(int b = a + 1; b < levels.number_of_axes; ++b) {
+        const int i = levels.axes[a], j = levels.axes[b];
         for(std::int32_t k = first[i]; k <= last[i]; ++k) {
           // Only the lattice points near the column x_i = k of the projected triangle
           // are candidates: the work is proportional to its area, not its bounding box.
@@ -1349,15 +1398,6 @@ private:
   static std::int32_t highest_ceiling(const Triangle& t, int P)
   {
     return (std::max)({(*t.c[0])[P], (*t.c[1])[P], (*t.c[2])[P]});
-  }
-
-  /// Number of hyperplane segments crossing the triangle (levels strictly crossed).
-  static std::int32_t number_of_crossed_hyperplanes(const Triangle& t)
-  {
-    std::int32_t n = 0;
-    for(int q = 0; q < D; ++q)
-      n += highest_ceiling(t, q) - lowest_ceiling(t, q);
-    return n;
   }
 
   /// Whether the segment of x_P = level across the triangle holds an intersection

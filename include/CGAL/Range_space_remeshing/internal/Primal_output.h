@@ -119,10 +119,14 @@ Normals_at_point normals_on_sides(const PointArray& points, const std::array<Vec
   const bool same01 = points[0] == points[1], same12 = points[1] == points[2], same02 = points[0] == points[2];
   if(!same01 && !same12 && !same02)
     return {blend({0, 1, 2}), {{0, 0, 0}}};
-  if(same01 && same12) {
-    std::array<int, 3> by_weight = {{0, 1, 2}};
-    std::sort(by_weight.begin(), by_weight.end(), [&](int a, int b) { return w[a] > w[b] || (w[a] == w[b] && a < b); });
-    return {normals[by_weight[0]], normals[by_weight[1]]};
+  if(same01 && same12) { // the two heaviest copies; of equal weights, the first
+    int heaviest = 0;
+    for(int c = 1; c < 3; ++c)
+      heaviest = w[c] > w[heaviest] ? c : heaviest;
+    int second = heaviest == 0 ? 1 : 0;
+    for(int c = second + 1; c < 3; ++c)
+      second = c != heaviest && w[c] > w[second] ? c : second;
+    return {normals[heaviest], normals[second]};
   }
   const int lone = same01 ? 2 : (same12 ? 0 : 1);
   int partner = (lone + 1) % 3, other = (lone + 2) % 3;

@@ -42,6 +42,12 @@ inline Vec3 to_vec3(const Vec3& v) { return v; }
 /// under- or overflow in the squared length.
 inline Vec3 normalized(const Vec3& v)
 {
+  // common case: the squared length neither underflows nor overflows, one division
+  const double squared = dot(v, v);
+  if(squared > 1e-280 && squared < 1e280) {
+    const double inverse_length = 1 / std::sqrt(squared);
+    return Vec3{{v[0] * inverse_length, v[1] * inverse_length, v[2] * inverse_length}};
+  }
   if(!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
     return Vec3{{0, 0, 0}};
   const double largest = (std::max)({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});

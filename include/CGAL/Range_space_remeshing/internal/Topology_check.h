@@ -291,8 +291,8 @@ private:
     cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
   }
 
-  /// The cells the open edge from vertex a to vertex b meets, but for its ends'; once
-  /// `remove_repeats()` has run.
+  /// Adds the cells the open edge from vertex a to vertex b meets, but for its ends';
+  /// long lists may hold repeats until the caller runs `remove_repeats()`.
   void add_crossing_cells(std::uint32_t a, std::uint32_t b, std::vector<Levels>& cells) const
   {
     const Levels &ca = tracer_.ceiling_of(a), &cb = tracer_.ceiling_of(b);
