@@ -17,7 +17,7 @@ export CCACHE_DIR="${CCACHE_DIR:-$HOME/.cache/ccache}"
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 cmake -S . -B build-bench -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF \
       -DRANGE_SPACE_REMESHING_BUILD_EXAMPLES=OFF -DRANGE_SPACE_REMESHING_BUILD_BENCHMARKS=ON >/dev/null
-cmake --build build-bench -j "$(nproc)" --target table1 contour_benchmark
+cmake --build build-bench -j "$(nproc)" --target rsr_benchmarks
 
 data=build-bench/data
 mkdir -p "$data"
