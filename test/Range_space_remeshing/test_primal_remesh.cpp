@@ -283,6 +283,14 @@ void test_errors()
   one_triangle.add_face(one_triangle.add_vertex(Point(0, 0, 0)), one_triangle.add_vertex(Point(1, 0, 0)),
                         one_triangle.add_vertex(Point(0, 1, 1)));
   CHECK(throws_remeshing_error([&] { RSR::primal_remesh(one_triangle, out, params::grid_spacing(1e-5)); }, refusal));
+  // one face across nearly 2^30 levels in each of three axes: more crossed levels than
+  // a 32-bit count holds (it overflowed: UBSan's report in the sanitizer suite), still
+  // refused before its scan
+  const double far = double((1 << 29) - 2);
+  Mesh huge_triangle;
+  huge_triangle.add_face(huge_triangle.add_vertex(Point(-far, -far, -far)),
+                         huge_triangle.add_vertex(Point(far, -far, far)), huge_triangle.add_vertex(Point(-far, far, far)));
+  CHECK(throws_remeshing_error([&] { RSR::primal_remesh(huge_triangle, out, params::grid_spacing(1.0)); }, refusal));
   // A cap above the estimate (7,396 for 7,378 vertices) that the scan's bound reaches
   // on the way (after 2,902 vertices): the scan goes on after the estimate, to the
   // same output.

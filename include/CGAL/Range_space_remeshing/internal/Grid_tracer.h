@@ -269,7 +269,7 @@ public:
             continue;
           const Crossed_levels levels = crossed_levels(t);
           if(untraced_pieces_) // the task's own entry
-            untraced_pieces_[t.face_id] += levels.hyperplanes;
+            untraced_pieces_[t.face_id] += std::int32_t(levels.hyperplanes);
           scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
             found[c].push_back(
                 {std::uint32_t(position), std::int8_t(i), std::int8_t(j), std::int8_t(o), k, m});
@@ -451,7 +451,9 @@ private:
     Levels first, last;
     std::array<int, D> axes;      // the axes with a crossed level, increasing
     int number_of_axes = 0;
-    std::int32_t hyperplanes = 0; // crossed levels over all axes: the hyperplane segments in the triangle
+    // crossed levels over all axes: the hyperplane segments in the triangle (up to
+    // D * 2^30 for an absurd cell size, hence 64 bits)
+    std::int64_t hyperplanes = 0;
   };
 
   struct Wall
@@ -614,7 +616,7 @@ private:
   void scan_crossed_levels_of(const Triangle& t, const Crossed_levels& levels)
   {
     if(untraced_pieces_)
-      untraced_pieces_[t.face_id] += levels.hyperplanes;
+      untraced_pieces_[t.face_id] += std::int32_t(levels.hyperplanes);
     scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
       find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
     });
@@ -642,7 +644,7 @@ private:
       levels.last[q] = highest_ceiling(t, q) - 1;
     }
     for(int q = 0; q < D; ++q) {
-      levels.hyperplanes += levels.last[q] + 1 - levels.first[q];
+      levels.hyperplanes += std::int64_t(levels.last[q]) + 1 - levels.first[q];
       if(levels.first[q] <= levels.last[q])
         levels.axes[levels.number_of_axes++] = q;
     }
