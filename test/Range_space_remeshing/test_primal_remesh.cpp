@@ -291,6 +291,15 @@ void test_errors()
   huge_triangle.add_face(huge_triangle.add_vertex(Point(-far, -far, -far)),
                          huge_triangle.add_vertex(Point(far, -far, far)), huge_triangle.add_vertex(Point(-far, far, far)));
   CHECK(throws_remeshing_error([&] { RSR::primal_remesh(huge_triangle, out, params::grid_spacing(1.0)); }, refusal));
+  // a needle of a face along the same diagonal: nearly no area (a small estimate), but
+  // 3 * 2^30 crossed levels, whose scan ran for minutes
+  Mesh needle;
+  needle.add_face(needle.add_vertex(Point(-far, -far, -far)), needle.add_vertex(Point(far, far, far)),
+                  needle.add_vertex(Point(far, far - 1e-7, far)));
+  for(const auto seeding : {RSR::Seeding_method::COMPLETE_SCAN, RSR::Seeding_method::SEEDED})
+    CHECK(throws_remeshing_error(
+        [&] { RSR::primal_remesh(needle, out, params::grid_spacing(1.0).seeding_method(seeding)); },
+        "grid hyperplanes, more than the cap"));
   // A cap above the estimate (7,396 for 7,378 vertices) that the scan's bound reaches
   // on the way (after 2,902 vertices): the scan goes on after the estimate, to the
   // same output.

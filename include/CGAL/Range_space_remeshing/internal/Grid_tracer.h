@@ -268,6 +268,7 @@ public:
           if(in_one_cell(t))
             continue;
           const Crossed_levels levels = crossed_levels(t);
+          refuse_if_too_many_crossings(levels, t.face_id);
           if(untraced_pieces_) // the task's own entry
             untraced_pieces_[t.face_id] += std::int32_t(levels.hyperplanes);
           scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
@@ -615,11 +616,23 @@ private:
 
   void scan_crossed_levels_of(const Triangle& t, const Crossed_levels& levels)
   {
+    refuse_if_too_many_crossings(levels, t.face_id);
     if(untraced_pieces_)
       untraced_pieces_[t.face_id] += std::int32_t(levels.hyperplanes);
     scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
       find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
     });
+  }
+
+  /// A face crossing more levels than the output may have vertices: its scan alone would
+  /// take a loop per crossed level, and a needle of a face across the whole lattice
+  /// (2^30 levels per axis, nearly no area, so no large estimate) ran for minutes.
+  void refuse_if_too_many_crossings(const Crossed_levels& levels, std::uint32_t face_id) const
+  {
+    if(levels.hyperplanes > std::int64_t(maximum_vertices_))
+      throw Remeshing_error("face " + std::to_string(face_id) + " crosses " + std::to_string(levels.hyperplanes) +
+                            " grid hyperplanes, more than the cap of " + std::to_string(maximum_vertices_) +
+                            " vertices: the cell size is too small for this input");
   }
 
   /// Whether the three corners have the same ceilings, so that no lattice level is
