@@ -36,6 +36,7 @@
 #endif
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/use.h>
 
 #include <algorithm>
 #include <array>
@@ -146,7 +147,10 @@ public:
 
   // ---------------------------------------------------------------- seeding
   /// Finds every intersection vertex of the triangle `f` and queues it.
-  void scan_face(face_descriptor f) { scan_triangle(load_face(f)); }
+  void scan_face(face_descriptor f)
+  {
+    scan_triangle(load_face(f), [](const Crossed_levels&) {});
+  }
 
   /// The complete scan on this thread: `scan_face()` over `faces(tm)`, after
   /// `map_all_vertices()`. Refuses an output whose expected size
@@ -162,21 +166,17 @@ public:
     const double check_at = (std::min)(cap, vertices_built_before_estimate);
     double bound = 0;
     bool checked = false;
-    for(face_descriptor f : faces(tm_)) {
-      const Triangle t = load_face(f);
-      if(!in_one_cell(t)) {
-        const Crossed_levels levels = crossed_levels(t);
-        if(!checked) {
-          bound += vertices_bound(levels);
-          if(bound_may_reach(bound, check_at)) {
-            checked = true;
-            refuse_if_expected_above(cap);
-          }
-        }
-        scan_crossed_levels_of(t, levels);
+    auto bound_before_scan = [&](const Crossed_levels& levels) {
+      if(checked)
+        return;
+      bound += vertices_bound(levels);
+      if(bound_may_reach(bound, check_at)) {
+        checked = true;
+        refuse_if_expected_above(cap);
       }
-      create_border_crossings_of(t.face_id);
-    }
+    };
+    for(face_descriptor f : faces(tm_))
+      scan_triangle(load_face(f), bound_before_scan);
   }
 
   /// Throws the error that says the output would exceed `cap` if
@@ -268,9 +268,7 @@ public:
           if(in_one_cell(t))
             continue;
           const Crossed_levels levels = crossed_levels(t);
-          refuse_if_too_many_crossings(levels, t.face_id);
-          if(untraced_pieces_) // the task's own entry
-            untraced_pieces_[t.face_id] += std::int32_t(levels.hyperplanes);
+          account_for_crossings(levels, t.face_id);
           scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
             found[c].push_back(
                 {std::uint32_t(position), std::int8_t(i), std::int8_t(j), std::int8_t(o), k, m});
@@ -606,22 +604,30 @@ private:
     return load(face_id);
   }
 
-  /// Finds every intersection vertex of the triangle and queues it.
-  void scan_triangle(const Triangle& t)
+  /// Finds every intersection vertex of the triangle and queues it. If it crosses a
+  /// level, `before_scan(levels)` is told which before anything is built.
+  template <class BeforeScan>
+  void scan_triangle(const Triangle& t, const BeforeScan& before_scan)
   {
-    if(!in_one_cell(t))
-      scan_crossed_levels_of(t, crossed_levels(t));
+    if(!in_one_cell(t)) {
+      const Crossed_levels levels = crossed_levels(t);
+      before_scan(levels);
+      account_for_crossings(levels, t.face_id);
+      scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
+        find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
+      });
+    }
     create_border_crossings_of(t.face_id);
   }
 
-  void scan_crossed_levels_of(const Triangle& t, const Crossed_levels& levels)
+  /// What every scan does with the levels a face crosses before its exact tests:
+  /// refuses too many, and counts the pieces of arc the topology check expects.
+  /// Writes only the face's own entry, so tasks of the parallel scan may call it.
+  void account_for_crossings(const Crossed_levels& levels, std::uint32_t face_id)
   {
-    refuse_if_too_many_crossings(levels, t.face_id);
+    refuse_if_too_many_crossings(levels, face_id);
     if(untraced_pieces_)
-      untraced_pieces_[t.face_id] += std::int32_t(levels.hyperplanes);
-    scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
-      find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
-    });
+      untraced_pieces_[face_id] += std::int32_t(levels.hyperplanes);
   }
 
   /// A face crossing more levels than the output may have vertices: its scan alone would
@@ -1109,6 +1115,7 @@ private:
     if(end == no_link)
       throw std::logic_error("Range_space_remeshing: arc ends at no boundary vertex (internal error)");
     end_slot = boundary_arc_slot;
+    CGAL_USE(lo); // read by the assertion only
     CGAL_assertion_code(const Vertex& ev = vertices_[end];)
     CGAL_assertion_code(for(int q = 0; q < D; ++q))
     CGAL_assertion(q == P || ev.cell[q] == lo[q]);
