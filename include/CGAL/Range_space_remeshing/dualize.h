@@ -404,19 +404,18 @@ edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index, const HasD
   std::vector<halfedge_descriptor> low_edges; // edges with an end whose dual face is not a quad
   // a border vertex's dual face has one corner more than its valence (the dual vertex
   // of the border chain arriving); border vertices of valence 2 have no dual face
-  auto corners_of_dual_face = [&](auto v) {
-    return degree(v, primal) + (is_border(v, primal) ? 1 : 0);
-  };
-  for(auto v : vertices(primal))
-    charge[get(vertex_index, v)] = std::size_t(std::max<long>(0, long(corners_of_dual_face(v)) - 2));
-  auto between_dual_faces = [&](halfedge_descriptor h) {
-    return !is_border(edge(h, primal), primal) && has_dual_face(source(h, primal)) &&
-           has_dual_face(target(h, primal));
-  };
+  // (by vertex index: each vertex is asked once per edge, and is_border(v) walks around v)
+  std::vector<std::size_t> corners_of_dual_face(n);
+  for(auto v : vertices(primal)) {
+    const std::size_t i = get(vertex_index, v);
+    corners_of_dual_face[i] = degree(v, primal) + (is_border(v, primal) ? 1 : 0);
+    charge[i] = std::size_t(std::max<long>(0, long(corners_of_dual_face[i]) - 2));
+  }
   for(auto e : edges(primal)) {
     const halfedge_descriptor h = halfedge(e, primal);
-    if(between_dual_faces(h) &&
-       (corners_of_dual_face(source(h, primal)) < 4 || corners_of_dual_face(target(h, primal)) < 4))
+    const auto s = source(h, primal), t = target(h, primal);
+    if(!is_border(e, primal) && has_dual_face(s) && has_dual_face(t) &&
+       (corners_of_dual_face[get(vertex_index, s)] < 4 || corners_of_dual_face[get(vertex_index, t)] < 4))
       low_edges.push_back(h);
   }
   auto groups = [&](halfedge_descriptor h) {
@@ -440,15 +439,18 @@ edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index, const HasD
   };
   join_all(0, 0); // chains of valence-2 vertices
   join_all(0, 1); // ... take a valence-3 end
+  std::vector<halfedge_descriptor> options;
+  std::vector<std::size_t> count(n, 0); // by group: its options; zeroed after each round
+  std::vector<std::size_t> counted;       // the groups whose count is not zero
   for(;;) { // match charge-1 groups, most constrained first, until none is left
-    std::vector<halfedge_descriptor> options;
-    std::vector<std::size_t> count(n, 0);
+    options.clear();
     for(halfedge_descriptor h : low_edges) {
       const auto [a, b] = groups(h);
       if(a != b && charge[a] == 1 && charge[b] == 1) {
         options.push_back(h);
-        ++count[a];
-        ++count[b];
+        for(std::size_t group : {a, b})
+          if(count[group]++ == 0)
+            counted.push_back(group);
       }
     }
     if(options.empty())
@@ -463,14 +465,16 @@ edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index, const HasD
     }
     if(!forced) // only cycles of choices left: any edge of them
       join(options.front());
+    for(std::size_t group : counted)
+      count[group] = 0;
+    counted.clear();
   }
   // what is left of valence-2 chains joins one valence-4 neighbour, or failing
-  // that any neighbour: a group of charge 0 would be a face of degree 2
+  // that any neighbour: a group of charge 0 would be a face of degree 2. Its vertices
+  // have charge 0 too (no charge is negative), so fewer than 4 dual corners: the edges
+  // with such an end are all low edges.
   for(std::size_t wanted : {std::size_t(2), std::size_t(1), std::size_t(3)})
-    for(auto e : edges(primal)) {
-      const halfedge_descriptor h = halfedge(e, primal);
-      if(!between_dual_faces(h))
-        continue;
+    for(halfedge_descriptor h : low_edges) {
       const auto [a, b] = groups(h);
       if(a != b && ((charge[a] == 0 && charge[b] >= wanted) || (charge[a] >= wanted && charge[b] == 0)))
         join(h);

@@ -12,6 +12,7 @@
 #include <CGAL/Range_space_remeshing/internal/Polygon_kernel.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
+#include <CGAL/Iterator_range.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -24,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -282,6 +284,12 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
   std::vector<internal::Quadric_projection> projection(n);
   std::vector<std::uint8_t> on_face_without_area(n, 0);
   std::vector<Vec3> scratch;
+  // What each iteration fits a vertex to, made once: its planes with unit normals
+  // (flat, by vertex index) and the box of their points (all of space if none).
+  std::vector<std::pair<Vec3, Vec3>> unit_planes;
+  std::vector<std::size_t> first_unit_plane(n, 0), end_unit_plane(n, 0);
+  const double infinity = std::numeric_limits<double>::infinity();
+  std::vector<std::pair<Vec3, Vec3>> planes_box(n, {{{-infinity, -infinity, -infinity}}, {{infinity, infinity, infinity}}});
   for(vertex_descriptor v : vertices(mesh)) {
     const std::size_t i = get(vertex_index, v);
     if(on_border[i])
@@ -289,9 +297,16 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
     on_face_without_area[i] = internal::planes_of_face_without_area(get(tangent_planes, v), scratch);
     if(on_face_without_area[i])
       continue; // it stays: no projection needed
+    const auto& planes = get(tangent_planes, v);
     internal::Quadric quadric;
-    quadric.add_planes(get(tangent_planes, v));
+    quadric.add_planes(planes);
     projection[i] = internal::Quadric_projection(quadric, internal::quadric_truncation);
+    first_unit_plane[i] = unit_planes.size();
+    for(const auto& plane : planes)
+      unit_planes.emplace_back(plane.first, internal::normalized(plane.second));
+    end_unit_plane[i] = unit_planes.size();
+    if(!planes.empty())
+      planes_box[i] = internal::points_box(planes);
   }
   const internal::Face_corners face_corners(mesh, vertex_index, n);
   // The neighbours each vertex is averaged with, by index, in flat arrays walked at
@@ -324,9 +339,8 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
       for(int d = 0; d < 3; ++d)
         p[d] /= count;
       m = internal::normalized(m);
-      const auto& planes = get(tangent_planes, v);
       if(on_border[i]) {
-        next_position[i] = slide_along_border(i, p, planes);
+        next_position[i] = slide_along_border(i, p, get(tangent_planes, v));
         next_normal[i] = m == Vec3{{0, 0, 0}} ? normal[i] : m;
         continue;
       }
@@ -336,8 +350,10 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
         next_normal[i] = normal[i];
         continue;
       }
+      const auto planes = CGAL::make_range(unit_planes.cbegin() + first_unit_plane[i],
+                                           unit_planes.cbegin() + end_unit_plane[i]);
       next_position[i] =
-          stays ? position[i] : projection[i].fit_nearest_planes(internal::clamped_to_points_box(p, planes), planes);
+          stays ? position[i] : projection[i].fit_nearest_planes(internal::clamped_to_box(p, planes_box[i]), planes);
       next_normal[i] = m;
     }
     keep_faces_unfolded(face_corners, position, normal, next_position);

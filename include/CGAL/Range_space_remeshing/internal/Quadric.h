@@ -364,7 +364,8 @@ public:
   /// s^2 the planes' mean squared distance, so that no plane takes all the weight).
   /// Weights are relative to the largest, and at least a tenth: the system then
   /// stays as well-conditioned as the truncation made the quadric's. A corner (three
-  /// directions) is the quadric's point, whatever the weights.
+  /// directions) is the quadric's point, whatever the weights. The planes' normals
+  /// must be unit vectors.
   template <class PlaneRange>
   Vec3 fit_nearest_planes(const Vec3& x, const PlaneRange& planes) const
   {
@@ -387,7 +388,7 @@ public:
     // normal equations in the coordinates t of x + t_0 e_0 + t_1 e_1
     double m[2][2] = {{0, 0}, {0, 0}}, rhs[2] = {0, 0};
     for(const auto& plane : planes) {
-      const Vec3 n = normalized(plane.second);
+      const Vec3& n = plane.second;
       const Vec3 d = difference(plane.first, x);
       const double w = (std::max)(relative_weight(dot(d, d)), 0.1);
       const double a[2] = {dot(n, directions_[0]), constrained_ > 1 ? dot(n, directions_[1]) : 0.};
