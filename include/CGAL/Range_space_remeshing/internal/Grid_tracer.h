@@ -612,12 +612,17 @@ private:
     if(!in_one_cell(t)) {
       const Crossed_levels levels = crossed_levels(t);
       before_scan(levels);
-      account_for_crossings(levels, t.face_id);
-      scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
-        find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
-      });
+      scan_crossed_levels_of(t, levels);
     }
     create_border_crossings_of(t.face_id);
+  }
+
+  void scan_crossed_levels_of(const Triangle& t, const Crossed_levels& levels)
+  {
+    account_for_crossings(levels, t.face_id);
+    scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
+      find_or_create(t.face_id, i, j, k, m, o, /*queue*/ true);
+    });
   }
 
   /// What every scan does with the levels a face crosses before its exact tests:
