@@ -70,7 +70,7 @@ public:
                  std::vector<Vec3>& normals, bool rotate_edges)
     : rotate_edges_(rotate_edges), mesh_(mesh), vpm_(vpm), planes_(planes), constrained_(constrained),
       vertex_index_(vertex_index), normals_(normals), face_index_(face_index),
-      removed_faces_(index_bound(faces(mesh), face_index), false), is_quad_(removed_faces_.size(), false),
+      removed_faces_(index_bound(faces(mesh), face_index), 0), is_quad_(removed_faces_.size(), 0),
       touched_in_pass_(removed_faces_.size(), 0), changed_in_walk_(removed_faces_.size(), 0),
       valences_(index_bound(vertices(mesh), vertex_index)),
       on_border_(valences_.size(), 0), nearby_in_stamp_(removed_faces_.size(), 0)
@@ -438,10 +438,11 @@ private:
             continue;
           const vertex_descriptor p = source(hexagon[k], mesh_), q = source(hexagon[k + 3], mesh_);
           rotate_untracked(h, hexagon, k);
-          // the geometric check last: most rotations make nothing possible. (The
-          // hexagon's sides are the same halfedges, at the same corners, after it.)
-          const std::vector<Candidate>& candidates = candidates_around({u, v, p, q});
-          if(!candidates.empty() && rotation_keeps_faces_unfolded(hexagon, k) && do_first_allowed(candidates, tries)) {
+          // The geometric check first: it refuses three tries in five, at half the
+          // cost of collecting the candidates around (about 1,650 against 3,300
+          // instructions a try on refined_elephant, R^6). (The hexagon's sides are
+          // the same halfedges, at the same corners, after the rotation.)
+          if(rotation_keeps_faces_unfolded(hexagon, k) && do_first_allowed(candidates_around({u, v, p, q}), tries)) {
             for(vertex_descriptor w : {u, v, p, q})
               if(valence(w) > 0) // not merged away by the collapse
                 touch_faces_around(w);
@@ -904,10 +905,11 @@ private:
   VertexIndexMap vertex_index_;
   std::vector<Vec3>& normals_;
   FaceIndexMap face_index_;
-  std::vector<bool> removed_faces_; // by face index: faces are never created
+  // by face index: faces are never created. (Bytes, not bits: read for every quad examined.)
+  std::vector<std::uint8_t> removed_faces_;
   // by face index, the degree test cached: a collapse replaces a corner of the faces
   // around it, a rotation or a doublet removal makes quads of quads
-  std::vector<bool> is_quad_;
+  std::vector<std::uint8_t> is_quad_;
   std::vector<std::size_t> touched_in_pass_; // by face index: last pass that queued it
   // by face index: 1 + the number of walks before the face's last change was listed
   // (in changed_since_walk_)
