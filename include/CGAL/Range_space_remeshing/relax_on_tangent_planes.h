@@ -285,7 +285,9 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
   std::vector<std::uint8_t> on_face_without_area(n, 0);
   std::vector<Vec3> scratch;
   // What each iteration fits a vertex to, made once: its planes with unit normals
-  // (flat, by vertex index) and the box of their points (all of space if none).
+  // (flat, by vertex index) and the box of their points (all of space if none), which
+  // the averaged position is clamped to: a vertex relaxed on tangent planes stays over
+  // the piece of surface they sample (past a crease, say, they no longer describe it).
   std::vector<std::pair<Vec3, Vec3>> unit_planes;
   std::vector<std::size_t> first_unit_plane(n, 0), end_unit_plane(n, 0);
   const double infinity = std::numeric_limits<double>::infinity();
@@ -294,10 +296,10 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
     const std::size_t i = get(vertex_index, v);
     if(on_border[i])
       continue;
-    on_face_without_area[i] = internal::planes_of_face_without_area(get(tangent_planes, v), scratch);
+    const auto& planes = get(tangent_planes, v);
+    on_face_without_area[i] = internal::planes_of_face_without_area(planes, scratch);
     if(on_face_without_area[i])
       continue; // it stays: no projection needed
-    const auto& planes = get(tangent_planes, v);
     internal::Quadric quadric;
     quadric.add_planes(planes);
     projection[i] = internal::Quadric_projection(quadric, internal::quadric_truncation);

@@ -318,15 +318,6 @@ inline Vec3 clamped_to_box(Vec3 x, const std::pair<Vec3, Vec3>& box)
   return x;
 }
 
-/// x clamped to the bounding box of the planes' points: a vertex relaxed on tangent
-/// planes stays over the piece of surface they sample (beyond it, past a crease, say,
-/// the planes no longer describe the surface).
-template <class PlaneRange>
-Vec3 clamped_to_points_box(const Vec3& x, const PlaneRange& planes)
-{
-  return planes.empty() ? x : clamped_to_box(x, points_box(planes));
-}
-
 /// Moves points to the nearest minimisers of a quadric, along the directions it
 /// constrains and no other: onto the plane in a flat region, onto the line of a
 /// crease, to the point of a corner. The eigen-decomposition is done once, so
