@@ -1,13 +1,17 @@
 // The perturbed predicates against a brute-force reference: exact rationals with
 // explicit eps-coefficients. Inputs are snapped to a coarse lattice of halves so
 // that ties (which the perturbation decides) are the rule, not the exception.
+// Also the tracer's comparisons of lattice levels, scalar and vector, against their
+// definition axis by axis.
 #include <CGAL/Range_space_remeshing/Range_space_traits.h>
+#include <CGAL/Range_space_remeshing/internal/Level_differences.h>
 #include <CGAL/Range_space_remeshing/internal/Perturbed_predicates.h>
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_rational.h>
 
 #include <array>
+#include <cstdint>
 #include <cstdlib>
 #include <iostream>
 #include <random>
@@ -161,11 +165,61 @@ void run(unsigned seed, int rounds)
   }
 }
 
+// masked_level_differences() and levels_differ(), in both versions, against the
+// definition written axis by axis, on levels drawn from {-1, 0, 1} so that equal and
+// different axes are both common.
+template <std::size_t N>
+int check_level_differences(std::mt19937& rng)
+{
+  using Levels = std::array<std::int32_t, N>;
+  std::uniform_int_distribution<int> level(-1, 1), coin(0, 1);
+  int mismatches = 0;
+  for(int trial = 0; trial < 20000; ++trial) {
+    Levels a, b, ref, mask;
+    for(std::size_t l = 0; l < N; ++l) {
+      ref[l] = level(rng);
+      // mostly equal to ref, as in the tracer, and sometimes far from it
+      a[l] = coin(rng) && coin(rng) ? ref[l] + level(rng) * (1 << 28) : ref[l];
+      b[l] = coin(rng) && coin(rng) ? level(rng) : ref[l];
+      mask[l] = coin(rng) || coin(rng) ? -1 : 0;
+    }
+    std::uint32_t expected_axes = 0;
+    bool expected_differ = false;
+    for(std::size_t l = 0; l < N; ++l) {
+      const bool differs = a[l] != ref[l] || b[l] != ref[l];
+      expected_differ = expected_differ || differs;
+      if(differs && mask[l] != 0)
+        expected_axes |= std::uint32_t(1) << l;
+    }
+    std::array<std::uint32_t, 2> axes{{RSR::internal::masked_level_differences(a, b, ref, mask),
+                                       RSR::internal::masked_level_differences_scalar(a, b, ref, mask)}};
+    std::array<bool, 2> differ{{RSR::internal::levels_differ(a, b, ref),
+                                RSR::internal::levels_differ_scalar(a, b, ref)}};
+#ifdef CGAL_RANGE_SPACE_REMESHING_VECTOR_EXTENSIONS
+    axes[0] = RSR::internal::masked_level_differences_vector(a, b, ref, mask);
+    differ[0] = RSR::internal::levels_differ_vector(a, b, ref);
+#endif
+    for(int version = 0; version < 2; ++version)
+      if(axes[version] != expected_axes || differ[version] != expected_differ) {
+        if(mismatches++ < 5)
+          std::cerr << "level differences, " << N << " axes, " << (version == 0 ? "vector" : "scalar")
+                    << " version: axes " << axes[version] << " instead of " << expected_axes
+                    << ", differ " << differ[version] << " instead of " << expected_differ << std::endl;
+      }
+  }
+  return mismatches;
+}
+
 int main()
 {
+  std::mt19937 level_rng(7);
+  const int level_mismatches = check_level_differences<1>(level_rng) + check_level_differences<3>(level_rng) +
+                               check_level_differences<4>(level_rng) + check_level_differences<6>(level_rng) +
+                               check_level_differences<9>(level_rng) + check_level_differences<32>(level_rng);
+  std::cout << "level differences: " << level_mismatches << " mismatches" << std::endl;
   run<RSR::Range_space_traits<D>>(1, 60000);
   run<RSR::Range_space_traits<D, CGAL::Exact_predicates_exact_constructions_kernel>>(2, 5000);
   std::cout << checks << " predicate evaluations compared, " << ties
             << " of them unperturbed ties; " << failures << " mismatches" << std::endl;
-  return failures == 0 && ties > 1000 ? EXIT_SUCCESS : EXIT_FAILURE;
+  return failures == 0 && ties > 1000 && level_mismatches == 0 ? EXIT_SUCCESS : EXIT_FAILURE;
 }

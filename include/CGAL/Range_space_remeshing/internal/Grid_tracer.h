@@ -25,6 +25,7 @@
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
 #include <CGAL/Range_space_remeshing/internal/Lazily_zeroed_array.h>
+#include <CGAL/Range_space_remeshing/internal/Level_differences.h>
 #include <CGAL/Range_space_remeshing/internal/Perturbed_predicates.h>
 #include <CGAL/Range_space_remeshing/internal/Vertex_table.h>
 
@@ -652,11 +653,7 @@ private:
   /// asked of every face.
   static bool in_one_cell(const Triangle& t)
   {
-    const Levels &c0 = *t.c[0], &c1 = *t.c[1], &c2 = *t.c[2];
-    std::int32_t differ = 0;
-    for(int q = 0; q < D; ++q)
-      differ |= (c0[q] ^ c1[q]) | (c1[q] ^ c2[q]);
-    return differ == 0;
+    return !levels_differ(*t.c[0], *t.c[2], *t.c[1]);
   }
 
   static Crossed_levels crossed_levels(const Triangle& t)
@@ -991,11 +988,24 @@ private:
     Vertex& v = vertices_[id];
     const Triangle t = load(v.face_id);
     const Point_d &a = *t.p[0], &b = *t.p[1], &c = *t.p[2];
+    const Levels &ca = *t.c[0], &cb = *t.c[1], &cc = *t.c[2];
     // barycentric estimate, only to guess the level; the exact test decides
-    const std::array<double, 3> w = barycentric(t, v.i, v.j, v.k(), v.m());
+    std::array<double, 3> w{};
+    bool estimated = false;
     for(int q = 0; q < D; ++q) {
       if(q == v.i || q == v.j)
         continue;
+      // Corners with one ceiling C lie strictly between the perturbed levels C - 1
+      // and C, and so does every point of the triangle: the cell is C - 1 without a
+      // test. True of most axes when D is large, as the cells are then wide.
+      if(ca[q] == cb[q] && cb[q] == cc[q]) {
+        v.cell[q] = ca[q] - 1;
+        continue;
+      }
+      if(!estimated) {
+        w = barycentric(t, v.i, v.j, v.k(), v.m());
+        estimated = true;
+      }
       const double lo = (std::min)({a[q], b[q], c[q]});
       const double hi = (std::max)({a[q], b[q], c[q]});
       double guess = w[0] * a[q] + w[1] * b[q] + w[2] * c[q];
@@ -1050,9 +1060,11 @@ private:
       hi[T] = v.cell[T];
     }
     std::array<double, D> lo_wall, hi_wall;
+    std::array<std::int32_t, D> not_P; // all bits set but in axis P: masks P out
     for(int q = 0; q < D; ++q) {
       lo_wall[q] = double(lo[q]);
       hi_wall[q] = double(hi[q]);
+      not_P[q] = q == P ? 0 : -1;
     }
 
     std::uint32_t f = v.face_id;
@@ -1076,10 +1088,7 @@ private:
       // walls of the first triangle kept: without one, an axis inside stays inside).
       const Levels& ca = *t.c[e];
       const Levels& cb = *t.c[(e + 1) % 3];
-      std::uint32_t candidates = 0;
-      for(int l = 0; l < D; ++l)
-        candidates |= std::uint32_t((ca[l] != hi[l]) | (cb[l] != hi[l])) << l;
-      candidates &= ~(std::uint32_t(1) << P);
+      std::uint32_t candidates = masked_level_differences(ca, cb, hi, not_P);
       Wall first;
       for(; candidates != 0; candidates &= candidates - 1) {
         const int l = lowest_set_bit(candidates);
