@@ -182,7 +182,8 @@ void measure_dual(const std::string& name, const Mesh& input, double h, int runs
 /// The cost of the dimension: primal contouring under the identity (D = 3), position +
 /// normal (D = 6, normal weight 0.5 diagonals) and position + normal + colour (D = 9,
 /// colours generated from the position: three bands per axis), each at about `target`
-/// output vertices; median time per output vertex.
+/// output vertices; median time per output vertex and per output face (the issue's
+/// measure: a higher D gives fewer faces for as many vertices).
 void measure_dimensions(const std::string& name, Mesh input, std::size_t target, int runs)
 {
   const double diagonal = bbox_diagonal(input);
@@ -197,7 +198,7 @@ void measure_dimensions(const std::string& name, Mesh input, std::size_t target,
   const RSR::Position_normal_range_map f6(input.points(), normals, 1.0, 0.5 * diagonal);
   const RSR::Position_normal_color_range_map f9(input.points(), normals, colors, 1.0, 0.5 * diagonal, 0.2 * diagonal);
   // returns the total; `normals_ms` receives the part spent on the input's normals
-  auto timed = [&](double h, int d, std::size_t& vertices, double& normals_ms) {
+  auto timed = [&](double h, int d, std::size_t& vertices, std::size_t& faces, double& normals_ms) {
     Mesh output;
     const auto start = std::chrono::steady_clock::now();
     if(d > 3)
@@ -208,6 +209,7 @@ void measure_dimensions(const std::string& name, Mesh input, std::size_t target,
         : d == 6 ? RSR::primal_remesh(input, output, RSR::parameters::range_map(f6).grid_spacing(h))
                  : RSR::primal_remesh(input, output, CGAL::parameters::grid_spacing(h));
     vertices = stats.output_vertices;
+    faces = stats.output_faces;
     return normals_ms + stats.time_total_ms;
   };
   // The three dimensions are timed in rounds, one run of each per round, so that a
@@ -216,37 +218,43 @@ void measure_dimensions(const std::string& name, Mesh input, std::size_t target,
   // which three series one after the other would report as a cost of the dimension.
   const int dimensions[3] = {3, 6, 9};
   double h[3];
-  std::size_t vertices[3] = {0, 0, 0};
-  std::vector<double> times[3], normal_times[3], ratio[3], ratio_without_normals[3];
+  std::size_t vertices[3] = {0, 0, 0}, faces[3] = {0, 0, 0};
+  std::vector<double> times[3], normal_times[3], ratio[3], ratio_without_normals[3], face_ratio[3],
+      face_ratio_without_normals[3];
   double normals_ms = 0;
   for(int k = 0; k < 3; ++k) {
     h[k] = benchmark_support::cell_size_for(
         [&](double h) {
-          timed(h, dimensions[k], vertices[k], normals_ms);
+          timed(h, dimensions[k], vertices[k], faces[k], normals_ms);
           return vertices[k];
         },
         0.01 * diagonal, target);
-    timed(h[k], dimensions[k], vertices[k], normals_ms); // warm-up
+    timed(h[k], dimensions[k], vertices[k], faces[k], normals_ms); // warm-up
   }
   for(int r = 0; r < runs; ++r) {
-    double per_vertex[3], per_vertex_without_normals[3];
+    double per_vertex[3], per_vertex_without_normals[3], per_face[3], per_face_without_normals[3];
     for(int k = 0; k < 3; ++k) {
-      times[k].push_back(timed(h[k], dimensions[k], vertices[k], normals_ms));
+      times[k].push_back(timed(h[k], dimensions[k], vertices[k], faces[k], normals_ms));
       normal_times[k].push_back(normals_ms);
       per_vertex[k] = times[k].back() / double(vertices[k]);
       per_vertex_without_normals[k] = (times[k].back() - normals_ms) / double(vertices[k]);
+      per_face[k] = times[k].back() / double(faces[k]);
+      per_face_without_normals[k] = (times[k].back() - normals_ms) / double(faces[k]);
     }
     for(int k = 0; k < 3; ++k) {
       ratio[k].push_back(per_vertex[k] / per_vertex[0]);
       ratio_without_normals[k].push_back(per_vertex_without_normals[k] / per_vertex_without_normals[0]);
+      face_ratio[k].push_back(per_face[k] / per_face[0]);
+      face_ratio_without_normals[k].push_back(per_face_without_normals[k] / per_face_without_normals[0]);
     }
   }
   for(int k = 0; k < 3; ++k) {
     const double ms = median(times[k]);
     char line[256];
-    std::snprintf(line, sizeof(line), "| %s | %d | %zu | %.2f | %.2f | %.0f | %.2f | %.2f |", name.c_str(),
-                  dimensions[k], vertices[k], ms, median(normal_times[k]), 1e6 * ms / double(vertices[k]),
-                  median(ratio[k]), median(ratio_without_normals[k]));
+    std::snprintf(line, sizeof(line), "| %s | %d | %zu | %zu | %.2f | %.2f | %.0f | %.2f | %.2f | %.2f | %.2f |",
+                  name.c_str(), dimensions[k], vertices[k], faces[k], ms, median(normal_times[k]),
+                  1e6 * ms / double(vertices[k]), median(ratio[k]), median(ratio_without_normals[k]),
+                  median(face_ratio[k]), median(face_ratio_without_normals[k]));
     std::cout << line << std::endl;
   }
 }
@@ -320,10 +328,10 @@ int main(int argc, char** argv)
                "normal, normal weight 0.5 bounding-box diagonals; D = 9: and colours generated from the "
                "position, colour weight 0.2 diagonals; at D = 6 and 9 the total includes the input's vertex "
                "normals, computed in one pass over the faces by `compute_vertex_normals()`):\n\n"
-            << "| mesh | D | output vertices | total ms | of which normals ms | ns per output vertex "
+            << "| mesh | D | output vertices | output faces | total ms | of which normals ms | ns per output vertex "
                "| per output vertex, / D = 3 (median of the rounds' ratios) | the same, normals given "
-               "(as the colours are) |\n"
-            << "|---|---:|---:|---:|---:|---:|---:|---:|\n";
+               "(as the colours are) | per output face, / D = 3 | the same, normals given |\n"
+            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for(const auto& [name, input, h, contour_ms] : duals)
     measure_dimensions(name, input, num_vertices(input) / 4, runs);
   return 0;
