@@ -266,9 +266,9 @@ public:
       for(std::size_t c = range.begin(); c != range.end(); ++c)
         for(std::size_t position = c * chunk; position < (std::min)(n, (c + 1) * chunk); ++position) {
           const Triangle t = load(all_face_ids_[position]); // reads only: all mapped and recorded
-          if(in_one_cell(t))
-            continue;
           const Crossed_levels levels = crossed_levels(t);
+          if(levels.number_of_axes == 0)
+            continue;
           account_for_crossings(levels, t.face_id);
           scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
             found[c].push_back(
@@ -447,7 +447,8 @@ private:
   /// The lattice levels a triangle strictly crosses, per axis.
   struct Crossed_levels
   {
-    // level k + eps lies strictly between lo and hi iff ceil(lo) <= k <= ceil(hi) - 1
+    // level k + eps lies strictly between lo and hi iff ceil(lo) <= k <= ceil(hi) - 1;
+    // set in the listed axes only
     Levels first, last;
     std::array<int, D> axes;      // the axes with a crossed level, increasing
     int number_of_axes = 0;
@@ -610,8 +611,8 @@ private:
   template <class BeforeScan>
   void scan_triangle(const Triangle& t, const BeforeScan& before_scan)
   {
-    if(!in_one_cell(t)) {
-      const Crossed_levels levels = crossed_levels(t);
+    const Crossed_levels levels = crossed_levels(t);
+    if(levels.number_of_axes > 0) {
       before_scan(levels);
       scan_crossed_levels_of(t, levels);
     }
@@ -647,27 +648,19 @@ private:
                             " vertices: the cell size is too small for this input");
   }
 
-  /// Whether the three corners have the same ceilings, so that no lattice level is
-  /// crossed and the triangle holds no intersection vertex: true of most triangles.
-  /// Without branches or a library call (std::array's == calls memcmp), as it is
-  /// asked of every face.
-  static bool in_one_cell(const Triangle& t)
-  {
-    return !levels_differ(*t.c[0], *t.c[2], *t.c[1]);
-  }
-
+  /// Asked of every face. Only the axes in which the corners' ceilings differ have a
+  /// crossed level; a face with none lies in one cell and holds no intersection vertex
+  /// (many faces, and the more so the higher D). One comparison of the three arrays
+  /// finds those axes (see Level_differences.h).
   static Crossed_levels crossed_levels(const Triangle& t)
   {
     Crossed_levels levels;
-    // the minima and maxima first, in their own loop: it vectorizes
-    for(int q = 0; q < D; ++q) {
+    for(std::uint32_t axes = level_differences(*t.c[0], *t.c[2], *t.c[1]); axes != 0; axes &= axes - 1) {
+      const int q = lowest_set_bit(axes);
       levels.first[q] = lowest_ceiling(t, q);
       levels.last[q] = highest_ceiling(t, q) - 1;
-    }
-    for(int q = 0; q < D; ++q) {
       levels.hyperplanes += std::int64_t(levels.last[q]) + 1 - levels.first[q];
-      if(levels.first[q] <= levels.last[q])
-        levels.axes[levels.number_of_axes++] = q;
+      levels.axes[levels.number_of_axes++] = q;
     }
     return levels;
   }

@@ -46,17 +46,6 @@ std::uint32_t masked_level_differences_scalar(const std::array<std::int32_t, D>&
   return axes;
 }
 
-/// Whether a[l] != ref[l] or b[l] != ref[l] in some axis l.
-template <std::size_t D>
-bool levels_differ_scalar(const std::array<std::int32_t, D>& a, const std::array<std::int32_t, D>& b,
-                          const std::array<std::int32_t, D>& ref)
-{
-  std::int32_t differ = 0;
-  for(std::size_t l = 0; l < D; ++l)
-    differ |= (a[l] ^ ref[l]) | (b[l] ^ ref[l]);
-  return differ != 0;
-}
-
 #ifdef CGAL_RANGE_SPACE_REMESHING_VECTOR_EXTENSIONS
 typedef std::int32_t Four_levels __attribute__((vector_size(16)));
 typedef std::uint32_t Four_bits __attribute__((vector_size(16)));
@@ -90,23 +79,6 @@ std::uint32_t masked_level_differences_vector(const std::array<std::int32_t, D>&
     axes |= std::uint32_t((((a[l] ^ ref[l]) | (b[l] ^ ref[l])) & mask[l]) != 0) << l;
   return axes;
 }
-
-/// levels_differ_scalar(), four axes at a time.
-template <std::size_t D>
-bool levels_differ_vector(const std::array<std::int32_t, D>& a, const std::array<std::int32_t, D>& b,
-                          const std::array<std::int32_t, D>& ref)
-{
-  Four_levels lanes = {0, 0, 0, 0};
-  std::size_t l = 0;
-  for(; l + 4 <= D; l += 4) {
-    const Four_levels r = load_four_levels(&ref[l]);
-    lanes |= (load_four_levels(&a[l]) ^ r) | (load_four_levels(&b[l]) ^ r);
-  }
-  std::int32_t differ = lanes[0] | lanes[1] | lanes[2] | lanes[3];
-  for(; l < D; ++l)
-    differ |= (a[l] ^ ref[l]) | (b[l] ^ ref[l]);
-  return differ != 0;
-}
 #endif
 
 /// The axes l, as bits 1 << l, where mask[l] != 0 and a[l] != ref[l] or b[l] != ref[l].
@@ -123,16 +95,15 @@ std::uint32_t masked_level_differences(const std::array<std::int32_t, D>& a,
   return masked_level_differences_scalar(a, b, ref, mask);
 }
 
-/// Whether a[l] != ref[l] or b[l] != ref[l] in some axis l.
+/// The axes l, as bits 1 << l, where a[l] != ref[l] or b[l] != ref[l].
 template <std::size_t D>
-bool levels_differ(const std::array<std::int32_t, D>& a, const std::array<std::int32_t, D>& b,
-                   const std::array<std::int32_t, D>& ref)
+std::uint32_t level_differences(const std::array<std::int32_t, D>& a, const std::array<std::int32_t, D>& b,
+                                const std::array<std::int32_t, D>& ref)
 {
-#ifdef CGAL_RANGE_SPACE_REMESHING_VECTOR_EXTENSIONS
-  if(D >= 4)
-    return levels_differ_vector(a, b, ref);
-#endif
-  return levels_differ_scalar(a, b, ref);
+  std::array<std::int32_t, D> every_axis{};
+  for(std::int32_t& m : every_axis)
+    m = -1;
+  return masked_level_differences(a, b, ref, every_axis);
 }
 
 } // namespace internal
