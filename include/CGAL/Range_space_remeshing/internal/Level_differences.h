@@ -26,6 +26,17 @@ namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
 
+/// Nonzero if and only if mask[l] != 0 and a[l] != ref[l] or b[l] != ref[l]: the term of
+/// one axis, shared by the reduction, the bit masks and the vector version's tail.
+template <std::size_t D>
+inline std::int32_t masked_difference_in_axis(const std::array<std::int32_t, D>& a,
+                                              const std::array<std::int32_t, D>& b,
+                                              const std::array<std::int32_t, D>& ref,
+                                              const std::array<std::int32_t, D>& mask, std::size_t l)
+{
+  return ((a[l] ^ ref[l]) | (b[l] ^ ref[l])) & mask[l];
+}
+
 /// The axes l, as bits 1 << l, where mask[l] != 0 and a[l] != ref[l] or b[l] != ref[l].
 template <std::size_t D>
 std::uint32_t masked_level_differences_scalar(const std::array<std::int32_t, D>& a,
@@ -37,12 +48,12 @@ std::uint32_t masked_level_differences_scalar(const std::array<std::int32_t, D>&
   // The tracer's common answer is none: one reduction tells it, without the shifts.
   std::int32_t differ = 0;
   for(std::size_t l = 0; l < D; ++l)
-    differ |= ((a[l] ^ ref[l]) | (b[l] ^ ref[l])) & mask[l];
+    differ |= masked_difference_in_axis(a, b, ref, mask, l);
   if(differ == 0)
     return 0;
   std::uint32_t axes = 0;
   for(std::size_t l = 0; l < D; ++l)
-    axes |= std::uint32_t((((a[l] ^ ref[l]) | (b[l] ^ ref[l])) & mask[l]) != 0) << l;
+    axes |= std::uint32_t(masked_difference_in_axis(a, b, ref, mask, l) != 0) << l;
   return axes;
 }
 
@@ -76,7 +87,7 @@ std::uint32_t masked_level_differences_vector(const std::array<std::int32_t, D>&
   }
   std::uint32_t axes = lanes[0] | lanes[1] | lanes[2] | lanes[3];
   for(; l < D; ++l)
-    axes |= std::uint32_t((((a[l] ^ ref[l]) | (b[l] ^ ref[l])) & mask[l]) != 0) << l;
+    axes |= std::uint32_t(masked_difference_in_axis(a, b, ref, mask, l) != 0) << l;
   return axes;
 }
 #endif
