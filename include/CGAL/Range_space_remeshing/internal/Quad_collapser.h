@@ -168,21 +168,64 @@ private:
     }
   }
 
-  /// Sorts a pass's candidates, best first: `has_priority()`, then the quads' order in
-  /// the sweep, then `rank_in_quad()`.
-  /// (The first pass compares candidates about a million times.)
-  static void sort_for_sweep(std::vector<Candidate>& candidates)
+  /// Sorts a pass's candidates by `comes_before_in_sweep()`. They arrive in sweep
+  /// order, so grouping them by `has_priority()`'s classes with a stable counting sort
+  /// keeps the sweep order within each class; only the rotations of one quad (at most
+  /// four, side by side) can be left out of rank order, which an insertion sort mends
+  /// in linear time. (A comparison sort compared candidates about a million times in
+  /// the first pass: 5 % of the pipeline's instructions.)
+  void sort_for_sweep(std::vector<Candidate>& candidates)
   {
-    std::sort(candidates.begin(), candidates.end(), [](const Candidate& x, const Candidate& y) {
-      if(x.energy_decrease != y.energy_decrease)
-        return x.energy_decrease > y.energy_decrease;
-      const bool x_collapses = x.edge == null_halfedge(), y_collapses = y.edge == null_halfedge();
-      if(x_collapses != y_collapses)
-        return x_collapses;
-      if(x.order != y.order)
-        return x.order < y.order;
-      return x.rank_in_quad < y.rank_in_quad;
-    });
+    if(!group_by_priority_class(candidates)) {
+      std::sort(candidates.begin(), candidates.end(), comes_before_in_sweep);
+      return;
+    }
+    for(std::size_t i = 1; i < candidates.size(); ++i) {
+      if(!comes_before_in_sweep(candidates[i], candidates[i - 1]))
+        continue;
+      const Candidate moved = candidates[i];
+      std::size_t j = i;
+      for(; j > 0 && comes_before_in_sweep(moved, candidates[j - 1]); --j)
+        candidates[j] = candidates[j - 1];
+      candidates[j] = moved;
+    }
+  }
+
+  /// Stable counting sort by priority class: a larger decrease first, then collapses
+  /// before rotations. Returns false, leaving the list as it is, if there would be more
+  /// classes than candidates (huge decreases around vertices of huge valence).
+  bool group_by_priority_class(std::vector<Candidate>& candidates)
+  {
+    int largest = 0;
+    for(const Candidate& c : candidates)
+      largest = (std::max)(largest, c.energy_decrease);
+    const std::size_t classes = 2 * std::size_t(largest) + 2;
+    if(classes > 2 * candidates.size() + 16)
+      return false;
+    auto priority_class = [largest](const Candidate& c) {
+      return 2 * std::size_t(largest - c.energy_decrease) + (c.edge == null_halfedge() ? 0 : 1);
+    };
+    class_starts_.assign(classes + 1, 0);
+    for(const Candidate& c : candidates)
+      ++class_starts_[priority_class(c) + 1];
+    for(std::size_t k = 1; k <= classes; ++k)
+      class_starts_[k] += class_starts_[k - 1];
+    grouped_candidates_.resize(candidates.size());
+    for(const Candidate& c : candidates)
+      grouped_candidates_[class_starts_[priority_class(c)]++] = c;
+    candidates.swap(grouped_candidates_);
+    return true;
+  }
+
+  /// The order of a pass: `has_priority()`, then the quads' order in the sweep, then
+  /// `rank_in_quad()`.
+  static bool comes_before_in_sweep(const Candidate& x, const Candidate& y)
+  {
+    if(has_priority(x, y) || has_priority(y, x))
+      return has_priority(x, y);
+    if(x.order != y.order)
+      return x.order < y.order;
+    return x.rank_in_quad < y.rank_in_quad;
   }
 
   /// Whether x goes before y whatever the tie-breaks: a larger decrease, and at equal
@@ -929,6 +972,8 @@ private:
   std::vector<std::size_t> nearby_in_stamp_;
   std::size_t nearby_stamp_ = 0;
   std::vector<Candidate> nearby_candidates_;
+  std::vector<std::size_t> class_starts_; // group_by_priority_class()'s counts
+  std::vector<Candidate> grouped_candidates_;
   struct Unlinked // what a collapse (or a doublet removal) took out of the connectivity
   {
     face_descriptor quad;
