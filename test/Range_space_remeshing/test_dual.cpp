@@ -5,6 +5,7 @@
 
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 #include <CGAL/Range_space_remeshing/dualize.h>
+#include <CGAL/Range_space_remeshing/internal/Pooled_tangent_planes_map.h>
 #include <CGAL/Range_space_remeshing/insert_crease_triangles.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 #include <CGAL/Range_space_remeshing/quad_collapse.h>
@@ -20,6 +21,7 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
 #include <limits>
 #include <random>
 #include <sstream>
@@ -868,8 +870,48 @@ void test_fandisk_creases(const Mesh& fandisk)
   CHECK(d_sharp.max < 0.8 * d_plain.max);
 }
 
+/// remesh()'s planes map: each vertex keeps its own list through the garbage
+/// collection, which renumbers the vertices; references stay valid while other
+/// vertices get lists; a new vertex starts with none.
+void test_pooled_tangent_planes_map()
+{
+  Mesh mesh;
+  const int n = 1000;
+  for(int i = 0; i < n; ++i)
+    mesh.add_vertex(Point(i, 0, 0));
+  std::deque<RSR::Tangent_planes> pool;
+  const RSR::internal::Pooled_tangent_planes_map<decltype(get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh))>
+      planes(get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh), pool);
+  const auto first = *vertices(mesh).begin();
+  RSR::Tangent_planes& held = get(planes, first);
+  CHECK(held.empty());
+  // a list per vertex, holding the vertex's x: how to tell whose list it is
+  for(auto v : vertices(mesh))
+    if(v != first)
+      put(planes, v, RSR::Tangent_planes(1 + int(v) % 3, {{{mesh.point(v).x(), 0, 0}}, {{0, 0, 1}}}));
+  held.push_back({{{0, 0, 0}}, {{0, 0, 1}}}); // through the reference taken before the others were made
+  CHECK_EQ(get(planes, first).size(), std::size_t(1));
+  std::vector<Mesh::Vertex_index> removed;
+  for(auto v : vertices(mesh))
+    if(int(v) % 3 != 1)
+      removed.push_back(v);
+  for(auto v : removed)
+    mesh.remove_vertex(v);
+  mesh.collect_garbage();
+  CHECK_EQ(num_vertices(mesh), std::size_t(n - removed.size()));
+  int mismatches = 0;
+  for(auto v : vertices(mesh)) {
+    const RSR::Tangent_planes& own = get(planes, v);
+    mismatches += own.empty() || own.front().first[0] != mesh.point(v).x();
+  }
+  CHECK_EQ(mismatches, 0);
+  const auto added = mesh.add_vertex(Point(-1, 0, 0));
+  CHECK(get(planes, added).empty());
+}
+
 int main(int argc, char** argv)
 {
+  test_pooled_tangent_planes_map();
   test_symmetric_eigen();
   test_sharp_placement_parts();
   test_newell_normal_far_from_origin();

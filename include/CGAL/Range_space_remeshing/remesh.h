@@ -10,6 +10,7 @@
 #include <CGAL/Range_space_remeshing/primal_remesh.h>
 #include <CGAL/Range_space_remeshing/quad_collapse.h>
 #include <CGAL/Range_space_remeshing/relax_on_tangent_planes.h>
+#include <CGAL/Range_space_remeshing/internal/Pooled_tangent_planes_map.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -17,6 +18,8 @@
 
 #include <array>
 #include <chrono>
+#include <cstddef>
+#include <deque>
 
 namespace CGAL {
 namespace Range_space_remeshing {
@@ -85,7 +88,11 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
 
   const Out_VPM out_vpm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
                                            get_property_map(CGAL::vertex_point, quads));
-  auto planes = get(CGAL::dynamic_vertex_property_t<Tangent_planes>(), quads);
+  // the planes by slot (see Pooled_tangent_planes_map.h): the dual and the collapse
+  // collect the mesh's garbage, which copies vertex properties element by element
+  std::deque<Tangent_planes> planes_pool;
+  const internal::Pooled_tangent_planes_map<decltype(get(CGAL::dynamic_vertex_property_t<std::size_t>(), quads))>
+      planes(get(CGAL::dynamic_vertex_property_t<std::size_t>(), quads), planes_pool);
   auto normals = get(CGAL::dynamic_vertex_property_t<Out_vector>(), quads);
   const Dual_placement placement =
       choose_parameter(get_parameter(np, internal_np::dual_placement), Dual_placement::QEM);
