@@ -382,6 +382,28 @@ std::size_t remove_pieces_with_non_simple_faces(Mesh& mesh, std::size_t& number_
   return pieces;
 }
 
+/// By vertex index: whether the vertex is on the border, and the number of corners of
+/// its dual face, its valence plus one on the border (the dual vertex of the border
+/// chain arriving closes the face). One walk around each vertex: `degree()` and
+/// `is_border()` would each walk it.
+template <class PolygonMesh, class VertexIndexMap>
+void count_corners_of_dual_faces(const PolygonMesh& primal, VertexIndexMap vertex_index,
+                                 std::vector<std::uint8_t>& on_border, std::vector<std::size_t>& corners)
+{
+  on_border.assign(num_vertices(primal), 0);
+  corners.assign(num_vertices(primal), 0);
+  for(auto v : vertices(primal)) {
+    std::size_t valence = 0;
+    bool border = false;
+    for(auto h : CGAL::halfedges_around_target(halfedge(v, primal), primal)) {
+      ++valence;
+      border = border || is_border(h, primal);
+    }
+    on_border[get(vertex_index, v)] = border;
+    corners[get(vertex_index, v)] = valence + (border ? 1 : 0);
+  }
+}
+
 /// Primal edges across which the dual faces are joined so that the dual is all quads.
 /// A dual face has as many corners as its primal vertex has edges, and joining the
 /// faces of a tree of primal vertices gives sum(valence - 2) + 2 corners: every group
@@ -391,9 +413,11 @@ std::size_t remove_pieces_with_non_simple_faces(Mesh& mesh, std::size_t& number_
 /// along primal edges, the most constrained first.
 /// A border vertex's dual face has one corner more (the border closes it); vertices
 /// without a dual face (`has_dual_face(v)` false) take no part.
+/// `corners_of_dual_face`: by vertex index, from `count_corners_of_dual_faces()`.
 template <class PolygonMesh, class VertexIndexMap, class HasDualFace>
 std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>
-edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index, const HasDualFace& has_dual_face)
+edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index, const HasDualFace& has_dual_face,
+              const std::vector<std::size_t>& corners_of_dual_face)
 {
   using halfedge_descriptor = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
   const std::size_t n = num_vertices(primal);
@@ -402,15 +426,8 @@ edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index, const HasD
     parent[i] = i;
   auto root = [&](std::size_t x) { return union_find_root(parent, x); };
   std::vector<halfedge_descriptor> low_edges; // edges with an end whose dual face is not a quad
-  // a border vertex's dual face has one corner more than its valence (the dual vertex
-  // of the border chain arriving); border vertices of valence 2 have no dual face
-  // (by vertex index: each vertex is asked once per edge, and is_border(v) walks around v)
-  std::vector<std::size_t> corners_of_dual_face(n);
-  for(auto v : vertices(primal)) {
-    const std::size_t i = get(vertex_index, v);
-    corners_of_dual_face[i] = degree(v, primal) + (is_border(v, primal) ? 1 : 0);
+  for(std::size_t i = 0; i < n; ++i)
     charge[i] = std::size_t(std::max<long>(0, long(corners_of_dual_face[i]) - 2));
-  }
   for(auto e : edges(primal)) {
     const halfedge_descriptor h = halfedge(e, primal);
     const auto s = source(h, primal), t = target(h, primal);
@@ -620,12 +637,12 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
   // vertex lies on the primal border and is placed from primal border data only, so
   // the dual border cannot shrink away from it.
   constexpr std::size_t no_chain = std::size_t(-1);
-  std::vector<std::uint8_t> on_border(num_vertices(primal), 0);
-  for(vertex_descriptor v : vertices(primal))
-    on_border[get(vertex_index, v)] = bool(is_border(v, primal));
+  std::vector<std::uint8_t> on_border;
+  std::vector<std::size_t> corners_of_dual_face;
+  internal::count_corners_of_dual_faces(primal, vertex_index, on_border, corners_of_dual_face);
   std::vector<std::uint8_t> has_dual_face_(num_vertices(primal), 0);
-  for(vertex_descriptor v : vertices(primal))
-    has_dual_face_[get(vertex_index, v)] = !on_border[get(vertex_index, v)] || degree(v, primal) >= 3;
+  for(std::size_t i = 0; i < has_dual_face_.size(); ++i) // on the border: valence 3 or more
+    has_dual_face_[i] = !on_border[i] || corners_of_dual_face[i] >= 4;
   auto has_dual_face = [&](vertex_descriptor v) { return bool(has_dual_face_[get(vertex_index, v)]); };
   // Chains end at those vertices, and also at a few valence-2 vertices, where a border
   // cycle would otherwise have fewer than three chains (a dual border cycle of one or
@@ -841,7 +858,7 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
   // Where the primal has vertices of valence 3 and 2 (the ends of merged digons),
   // join the dual faces across the primal edges chosen by `edges_to_join()`: each
   // group of joined faces then has exactly four corners.
-  for(halfedge_descriptor h : internal::edges_to_join(primal, vertex_index, has_dual_face)) {
+  for(halfedge_descriptor h : internal::edges_to_join(primal, vertex_index, has_dual_face, corners_of_dual_face)) {
     const dual_halfedge dh = d(h);
     if(!internal::join_keeps_face_simple(dh, quads))
       continue; // left as two faces: counted in non_quads
