@@ -681,6 +681,10 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     }
     chains.push_back({h, last});
   }
+  // at most: a vertex per primal face and per chain, an edge per primal edge and per
+  // chain (the closing edges), a face per primal vertex
+  internal::reserve_if_possible(quads, num_faces(primal) + chains.size(), num_edges(primal) + chains.size(),
+                                num_vertices(primal));
 
   Tangent_planes planes;
   std::vector<std::pair<vertex_descriptor, double>> color_sources; // with weights

@@ -33,6 +33,20 @@ void collect_garbage_if_any(CGAL::Surface_mesh<P>& m)
     m.collect_garbage();
 }
 
+/// Room for nv more vertices, ne more edges and nf more faces, where the mesh can
+/// make it: a `Surface_mesh` otherwise grows its property arrays by reallocation.
+template <class PolygonMesh>
+void reserve_if_possible(PolygonMesh&, std::size_t, std::size_t, std::size_t)
+{}
+
+template <class Point>
+void reserve_if_possible(CGAL::Surface_mesh<Point>& out, std::size_t nv, std::size_t ne, std::size_t nf)
+{
+  using size_type = typename CGAL::Surface_mesh<Point>::size_type;
+  out.reserve(size_type(num_vertices(out) + nv), size_type(num_edges(out) + ne),
+              size_type(num_faces(out) + nf));
+}
+
 /// One more than the largest index of the elements of `range`: the size of a vector
 /// indexed by them (a `Surface_mesh` with removed elements has gaps in its indices).
 template <class Range, class IndexMap>

@@ -14,6 +14,7 @@
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Color.h>
+#include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
@@ -136,20 +137,6 @@ Normals_at_point normals_on_sides(const PointArray& points, const std::array<Vec
   if(w[lone] + w[partner] >= w[other])
     return {lone_side, normals[other]};
   return {normals[other], lone_side};
-}
-
-template <class PolygonMesh>
-void reserve_if_possible(PolygonMesh&, std::size_t, std::size_t, std::size_t)
-{}
-
-/// Surface_mesh grows its property arrays one element at a time otherwise.
-template <class Point>
-void reserve_if_possible(CGAL::Surface_mesh<Point>& out, std::size_t nv, std::size_t ne,
-                         std::size_t nf)
-{
-  using size_type = typename CGAL::Surface_mesh<Point>::size_type;
-  out.reserve(size_type(num_vertices(out) + nv), size_type(num_edges(out) + ne),
-              size_type(num_faces(out) + nf));
 }
 
 template <class TriangleMesh, class VPM, class VertexIndexMap, class Tracer, class PolygonMesh,
