@@ -554,9 +554,10 @@ private:
     if(next(h[2], tm_) != h0)
       throw Remeshing_error("the input has a face that is not a triangle (face " +
                             std::to_string(face_id) + ")");
-    check_face_structure(f, face_id, h);
-    for(int e = 0; e < 3; ++e) {
+    for(int e = 0; e < 3; ++e)
       handles.corners[e] = source(h[e], tm_);
+    check_face_structure(f, face_id, h, handles.corners);
+    for(int e = 0; e < 3; ++e) {
       r.vertex[e] = std::uint32_t(get(vertex_index_, handles.corners[e]));
       const halfedge_descriptor o = opposite(h[e], tm_);
       if(is_border(o, tm_)) {
@@ -571,17 +572,16 @@ private:
 
   /// What the walk relies on, checked once per visited face (so also lazily in the
   /// seeded mode): the face's halfedges point back to it, their opposites to them, and
-  /// its three corners are distinct vertices.
-  void check_face_structure(face_descriptor f, std::uint32_t face_id,
-                            const std::array<halfedge_descriptor, 3>& h) const
+  /// its three corners (`corners[e]`, the source of `h[e]`) are distinct vertices.
+  void check_face_structure(face_descriptor f, std::uint32_t face_id, const std::array<halfedge_descriptor, 3>& h,
+                            const std::array<vertex_descriptor, 3>& corners) const
   {
     for(int e = 0; e < 3; ++e)
       if(face(h[e], tm_) != f || opposite(opposite(h[e], tm_), tm_) != h[e] ||
-         target(h[e], tm_) != source(h[(e + 1) % 3], tm_))
+         target(h[e], tm_) != corners[(e + 1) % 3])
         throw Remeshing_error("the input is not a valid halfedge structure around face " +
                               std::to_string(face_id));
-    if(source(h[0], tm_) == source(h[1], tm_) || source(h[1], tm_) == source(h[2], tm_) ||
-       source(h[2], tm_) == source(h[0], tm_))
+    if(corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0])
       throw Remeshing_error("the input has a face with a repeated vertex (face " + std::to_string(face_id) + ")");
   }
 
