@@ -107,6 +107,18 @@ inline std::int32_t ceil_to_int(double x)
   return i + (double(i) < x);
 }
 
+/// Throws `Error(message())`, with the message built here, out of line: built where the
+/// input is checked, once per face, it made the checking functions too big to inline.
+template <class Error, class Message>
+[[noreturn]]
+#if defined(__GNUC__)
+__attribute__((noinline, cold))
+#endif
+void throw_error(const Message& message)
+{
+  throw Error(message());
+}
+
 template <class TriangleMesh, class RangeMap, class FaceIndexMap, class VertexIndexMap,
           class Traits>
 class Grid_tracer
@@ -552,8 +564,8 @@ private:
     const halfedge_descriptor h0 = halfedge(f, tm_);
     const std::array<halfedge_descriptor, 3> h = {{h0, next(h0, tm_), next(next(h0, tm_), tm_)}};
     if(next(h[2], tm_) != h0)
-      throw Remeshing_error("the input has a face that is not a triangle (face " +
-                            std::to_string(face_id) + ")");
+      throw_error<Remeshing_error>(
+          [&] { return "the input has a face that is not a triangle (face " + std::to_string(face_id) + ")"; });
     for(int e = 0; e < 3; ++e)
       handles.corners[e] = source(h[e], tm_);
     check_face_structure(f, face_id, h, handles.corners);
@@ -579,10 +591,11 @@ private:
     for(int e = 0; e < 3; ++e)
       if(face(h[e], tm_) != f || opposite(opposite(h[e], tm_), tm_) != h[e] ||
          target(h[e], tm_) != corners[(e + 1) % 3])
-        throw Remeshing_error("the input is not a valid halfedge structure around face " +
-                              std::to_string(face_id));
+        throw_error<Remeshing_error>(
+            [&] { return "the input is not a valid halfedge structure around face " + std::to_string(face_id); });
     if(corners[0] == corners[1] || corners[1] == corners[2] || corners[2] == corners[0])
-      throw Remeshing_error("the input has a face with a repeated vertex (face " + std::to_string(face_id) + ")");
+      throw_error<Remeshing_error>(
+          [&] { return "the input has a face with a repeated vertex (face " + std::to_string(face_id) + ")"; });
   }
 
   /// An upper bound of the face's term of `expected_number_of_vertices()`, in O(D)
@@ -643,9 +656,11 @@ private:
   void refuse_if_too_many_crossings(const Crossed_levels& levels, std::uint32_t face_id) const
   {
     if(levels.hyperplanes > std::int64_t(maximum_vertices_))
-      throw Remeshing_error("face " + std::to_string(face_id) + " crosses " + std::to_string(levels.hyperplanes) +
-                            " grid hyperplanes, more than the cap of " + std::to_string(maximum_vertices_) +
-                            " vertices: the cell size is too small for this input");
+      throw_error<Remeshing_error>([&] {
+        return "face " + std::to_string(face_id) + " crosses " + std::to_string(levels.hyperplanes) +
+               " grid hyperplanes, more than the cap of " + std::to_string(maximum_vertices_) +
+               " vertices: the cell size is too small for this input";
+      });
   }
 
   /// Asked of every face. Only the axes in which the corners' ceilings differ have a
