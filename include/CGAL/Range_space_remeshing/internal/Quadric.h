@@ -37,17 +37,13 @@ Vec3 to_vec3(const Point& p)
 /// (lets maps and normals be given as std::array as well as CGAL points and vectors)
 inline Vec3 to_vec3(const Vec3& v) { return v; }
 
-/// v / |v|, or the zero vector if v is zero or not finite. Scaled by its largest
-/// component first, so that neither tiny nor huge vectors (input coordinates of 1e200)
-/// under- or overflow in the squared length.
-inline Vec3 normalized(const Vec3& v)
+/// normalized() of a vector whose squared length under- or overflows: scaled by its
+/// largest component first. Out of line, so that normalized() itself inlines.
+#if defined(__GNUC__)
+__attribute__((noinline))
+#endif
+inline Vec3 normalized_with_rescaling(const Vec3& v)
 {
-  // common case: the squared length neither underflows nor overflows, one division
-  const double squared = dot(v, v);
-  if(squared > 1e-280 && squared < 1e280) {
-    const double inverse_length = 1 / std::sqrt(squared);
-    return Vec3{{v[0] * inverse_length, v[1] * inverse_length, v[2] * inverse_length}};
-  }
   if(!std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
     return Vec3{{0, 0, 0}};
   const double largest = (std::max)({std::abs(v[0]), std::abs(v[1]), std::abs(v[2])});
@@ -58,6 +54,18 @@ inline Vec3 normalized(const Vec3& v)
   return Vec3{{w[0] / length, w[1] / length, w[2] / length}};
 }
 
+/// v / |v|, or the zero vector if v is zero or not finite. Neither tiny nor huge
+/// vectors (input coordinates of 1e200) under- or overflow in the squared length.
+inline Vec3 normalized(const Vec3& v)
+{
+  // common case: the squared length neither underflows nor overflows, one division
+  const double squared = dot(v, v);
+  if(squared > 1e-280 && squared < 1e280) {
+    const double inverse_length = 1 / std::sqrt(squared);
+    return Vec3{{v[0] * inverse_length, v[1] * inverse_length, v[2] * inverse_length}};
+  }
+  return normalized_with_rescaling(v);
+}
 
 /// The sum of the normals of a range of tangent planes (point, normal), not normalised.
 template <class PlaneRange>
