@@ -147,6 +147,8 @@ std::size_t rotate_parallel_edges(Mesh& mesh, VertexPointMap vpm)
     parallel.push_back(g);
     parallel.push_back(h);
   }
+  if(parallel.empty())
+    return 0; // the common case: no second pass over the mesh
   auto length = [&](vertex_descriptor x, vertex_descriptor y) {
     const Vec3 d = difference(to_vec3(get(vpm, x)), to_vec3(get(vpm, y)));
     return dot(d, d);
