@@ -872,14 +872,15 @@ void test_fandisk_creases(const Mesh& fandisk)
 
 /// remesh()'s planes map: each vertex keeps its own list through the garbage
 /// collection, which renumbers the vertices; references stay valid while other
-/// vertices get lists; a new vertex starts with none.
+/// vertices get lists; a new vertex starts with none; a decomposition kept for a
+/// vertex comes back only for a quadric of the matrix it was made from.
 void test_pooled_tangent_planes_map()
 {
   Mesh mesh;
   const int n = 1000;
   for(int i = 0; i < n; ++i)
     mesh.add_vertex(Point(i, 0, 0));
-  std::deque<RSR::Tangent_planes> pool;
+  RSR::internal::Tangent_planes_pool pool;
   const RSR::internal::Pooled_tangent_planes_map<decltype(get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh))>
       planes(get(CGAL::dynamic_vertex_property_t<std::size_t>(), mesh), pool);
   const auto first = *vertices(mesh).begin();
@@ -907,6 +908,25 @@ void test_pooled_tangent_planes_map()
   CHECK_EQ(mismatches, 0);
   const auto added = mesh.add_vertex(Point(-1, 0, 0));
   CHECK(get(planes, added).empty());
+
+  // A remembered decomposition is reused only for a quadric of the same matrix. To see
+  // which one comes back, v remembers q2's decomposition under q1's matrix.
+  auto quadric_of = [](std::initializer_list<RSR::internal::Vec3> normals) {
+    RSR::internal::Quadric q;
+    for(const auto& n : normals)
+      q.add_plane({{0, 0, 0}}, n);
+    return q;
+  };
+  const auto q1 = quadric_of({{{0, 0, 1}}, {{0, 1, 1}}});
+  const auto q2 = quadric_of({{{1, 0, 0}}, {{1, 1, 0}}, {{0, 0, 1}}});
+  const auto q3 = quadric_of({{{0, 1, 0}}});
+  const auto v = *vertices(mesh).begin(), w = *std::next(vertices(mesh).begin());
+  RSR::internal::remember_decomposition(planes, v, q1, RSR::internal::Quadric_eigen(q2));
+  CHECK(RSR::internal::decomposition_of(planes, v, q1).values == RSR::internal::Quadric_eigen(q2).values);
+  CHECK(RSR::internal::decomposition_of(planes, v, q3).values == RSR::internal::Quadric_eigen(q3).values);
+  CHECK(RSR::internal::decomposition_of(planes, w, q1).values == RSR::internal::Quadric_eigen(q1).values);
+  CHECK(RSR::internal::Quadric_eigen(q2).values != RSR::internal::Quadric_eigen(q3).values &&
+        RSR::internal::Quadric_eigen(q1).values != RSR::internal::Quadric_eigen(q2).values);
 }
 
 int main(int argc, char** argv)

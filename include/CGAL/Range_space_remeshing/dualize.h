@@ -12,6 +12,7 @@
 #include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Color.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
+#include <CGAL/Range_space_remeshing/internal/Pooled_tangent_planes_map.h>
 #include <CGAL/Range_space_remeshing/internal/Polygon_kernel.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 #include <CGAL/Range_space_remeshing/internal/Union_find.h>
@@ -32,6 +33,7 @@
 #include <chrono>
 #include <cstdint>
 #include <cmath>
+#include <optional>
 #include <utility>
 #include <vector>
 
@@ -40,9 +42,20 @@ namespace Range_space_remeshing {
 
 namespace internal {
 
-/// Position and normal of the dual vertex of a primal face with tangent planes `planes`.
-inline std::pair<Vec3, Vec3> place_dual_vertex(const Tangent_planes& planes, Dual_placement placement)
+/// The quadric of a dual vertex's planes and its decomposition, which the relaxation
+/// can reuse (see `remember_decomposition()`).
+struct Decomposed_quadric
 {
+  Quadric quadric;
+  Quadric_eigen eigen;
+};
+
+/// Position and normal of the dual vertex of a primal face with tangent planes `planes`;
+/// with the QEM placement, `decomposed` receives the quadric it solved.
+inline std::pair<Vec3, Vec3> place_dual_vertex(const Tangent_planes& planes, Dual_placement placement,
+                                               std::optional<Decomposed_quadric>& decomposed)
+{
+  decomposed.reset();
   Vec3 mass = {{0, 0, 0}}, normal = {{0, 0, 0}};
   for(const auto& plane : planes)
     for(int d = 0; d < 3; ++d) {
@@ -55,7 +68,8 @@ inline std::pair<Vec3, Vec3> place_dual_vertex(const Tangent_planes& planes, Dua
   if(placement == Dual_placement::QEM) {
     Quadric quadric;
     quadric.add_planes(planes);
-    return {quadric.minimiser(mass), unit_normal};
+    decomposed = Decomposed_quadric{quadric, Quadric_eigen(quadric)};
+    return {Quadric_projection(decomposed->eigen, quadric_truncation)(mass), unit_normal};
   }
   std::vector<Vec3> polygon;
   polygon.reserve(planes.size());
@@ -709,6 +723,7 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     return dv;
   };
   std::vector<dual_vertex> dual_of_face(num_faces(primal));
+  std::optional<internal::Decomposed_quadric> decomposed;
   for(auto f : faces(primal)) {
     planes.clear();
     color_sources.clear();
@@ -724,8 +739,12 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     if constexpr(wants_colors)
       for(auto& source : color_sources)
         source.second /= double(color_sources.size());
-    const auto placed = internal::place_dual_vertex(planes, placement);
-    dual_of_face[get(face_index, f)] = add_dual_vertex(placed.first, placed.second);
+    const auto placed = internal::place_dual_vertex(planes, placement, decomposed);
+    const dual_vertex dv = add_dual_vertex(placed.first, placed.second);
+    if constexpr(wants_planes)
+      if(decomposed)
+        internal::remember_decomposition(out_planes, dv, decomposed->quadric, decomposed->eigen);
+    dual_of_face[get(face_index, f)] = dv;
   }
   // a chain's dual vertex: half-way along it, with the tangent planes of the ends of
   // the primal border edge it lies on (along which the relaxation lets it slide)

@@ -10,6 +10,7 @@
 #include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Polygon_kernel.h>
+#include <CGAL/Range_space_remeshing/internal/Pooled_tangent_planes_map.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
 #include <CGAL/Iterator_range.h>
@@ -302,7 +303,8 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
       continue; // it stays: no projection needed
     internal::Quadric quadric;
     quadric.add_planes(planes);
-    projection[i] = internal::Quadric_projection(quadric, internal::quadric_truncation);
+    projection[i] =
+        internal::Quadric_projection(internal::decomposition_of(tangent_planes, v, quadric), internal::quadric_truncation);
     first_unit_plane[i] = unit_planes.size();
     for(const auto& plane : planes)
       unit_planes.emplace_back(plane.first, internal::normalized(plane.second));

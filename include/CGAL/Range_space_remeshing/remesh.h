@@ -19,7 +19,6 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
-#include <deque>
 
 namespace CGAL {
 namespace Range_space_remeshing {
@@ -90,7 +89,7 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
                                            get_property_map(CGAL::vertex_point, quads));
   // the planes by slot (see Pooled_tangent_planes_map.h): the dual and the collapse
   // collect the mesh's garbage, which copies vertex properties element by element
-  std::deque<Tangent_planes> planes_pool;
+  internal::Tangent_planes_pool planes_pool;
   const internal::Pooled_tangent_planes_map<decltype(get(CGAL::dynamic_vertex_property_t<std::size_t>(), quads))>
       planes(get(CGAL::dynamic_vertex_property_t<std::size_t>(), quads), planes_pool);
   auto normals = get(CGAL::dynamic_vertex_property_t<Out_vector>(), quads);
@@ -113,12 +112,14 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
     stats.primal = primal_remesh<ConcurrencyTag>(tm, primal, np, primal_out.vertex_color_map(primal_colors));
     if(num_faces(primal) == 0)
       return finish();
+    planes_pool.decompositions.reserve(num_faces(primal)); // one per dual vertex of a face
     stats.dual = dualize(primal, quads, dual_in.vertex_color_map(primal_colors),
                          dual_out.vertex_color_map(get_parameter(np_out, CGAL::internal_np::vertex_color_map)));
   } else {
     stats.primal = primal_remesh<ConcurrencyTag>(tm, primal, np, primal_out);
     if(num_faces(primal) == 0)
       return finish();
+    planes_pool.decompositions.reserve(num_faces(primal)); // one per dual vertex of a face
     stats.dual = dualize(primal, quads, dual_in, dual_out);
   }
   if(stats.dual.quads + stats.dual.non_quads == 0)

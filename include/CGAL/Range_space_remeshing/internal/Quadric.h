@@ -269,6 +269,8 @@ public:
   }
 
   int number_of_planes() const { return planes_; }
+  /// sum of u u^T over the unit normals u: what the decomposition depends on
+  const Matrix3& matrix() const { return a_; }
 
   /// Minimiser of the quadric, regularised towards `mass_point`: directions whose
   /// eigenvalue is below `truncation` times the largest are left at the mass point
@@ -298,6 +300,12 @@ struct Quadric_eigen
     if(planes > 0)
       symmetric_eigen_3(q.a_, values, vectors);
   }
+
+  /// q's, with the eigen-decomposition of q's matrix made earlier (`reused`'s, which
+  /// must come from a quadric with the same matrix).
+  Quadric_eigen(const Quadric& q, const Quadric_eigen& reused)
+      : b(q.b_), planes(q.planes_), values(reused.values), vectors(reused.vectors)
+  {}
 
   Vec3 b;
   int planes;
