@@ -272,12 +272,15 @@ void test_errors()
     CHECK(throws_remeshing_error([&] { RSR::primal_remesh(sphere, out, params::grid_spacing(h)); }));
   CHECK(throws_remeshing_error([&] { RSR::primal_remesh(sphere, out, params::grid_spacing(1e-12)); }));
   // The output size is estimated before it is built: refused with the estimate
-  // whether the cap is small or the default 50 million (about 2e8 expected here; the
-  // scan estimates once its bound passes a million vertices, long before the cap).
+  // whether the cap is small or the default (about 2e8 expected here; the scan
+  // estimates once its bound passes a million vertices, long before the cap).
   const std::string refusal = "the output would have about";
   CHECK(throws_remeshing_error(
       [&] { RSR::primal_remesh(sphere, out, params::grid_spacing(0.01).maximum_number(1000)); }, refusal));
   CHECK(throws_remeshing_error([&] { RSR::primal_remesh(sphere, out, params::grid_spacing(3e-4)); }, refusal));
+  // About 1.6e7 expected (6 pi / h^2 for the unit sphere): refused by the default cap,
+  // which keeps the whole pipeline's memory within reach (the old 5e7 let it run out).
+  CHECK(throws_remeshing_error([&] { RSR::primal_remesh(sphere, out, params::grid_spacing(1.1e-3)); }, refusal));
   // one face holding about 1e10 vertices: refused before its scan builds any
   Mesh one_triangle;
   one_triangle.add_face(one_triangle.add_vertex(Point(0, 0, 0)), one_triangle.add_vertex(Point(1, 0, 0)),
