@@ -90,8 +90,8 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
   // the planes by slot (see Pooled_tangent_planes_map.h): the dual and the collapse
   // collect the mesh's garbage, which copies vertex properties element by element
   internal::Tangent_planes_pool planes_pool;
-  const internal::Pooled_tangent_planes_map<decltype(get(CGAL::dynamic_vertex_property_t<std::size_t>(), quads))>
-      planes(get(CGAL::dynamic_vertex_property_t<std::size_t>(), quads), planes_pool);
+  auto slots = get(CGAL::dynamic_vertex_property_t<std::size_t>(), quads);
+  const internal::Pooled_tangent_planes_map<decltype(slots)> planes(slots, planes_pool);
   auto normals = get(CGAL::dynamic_vertex_property_t<Out_vector>(), quads);
   const Dual_placement placement =
       choose_parameter(get_parameter(np, internal_np::dual_placement), Dual_placement::QEM);
@@ -105,21 +105,23 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return stats;
   };
+  // The primal remesh, and whether it has faces.
+  auto remesh_primal = [&](const auto& np_primal_out) {
+    stats.primal = primal_remesh<ConcurrencyTag>(tm, primal, np, np_primal_out);
+    planes_pool.decompositions.reserve(num_faces(primal)); // one per dual vertex of a face
+    return num_faces(primal) > 0;
+  };
   // Nothing resolved at this cell size (or only pieces without a dual): an empty
   // result, which the statistics explain, rather than an error of a later stage.
   if constexpr(wants_colors) { // the primal carries colours only when they are wanted
     auto primal_colors = primal.add_property_map<typename Primal::Vertex_index, std::array<double, 3>>("v:color").first;
-    stats.primal = primal_remesh<ConcurrencyTag>(tm, primal, np, primal_out.vertex_color_map(primal_colors));
-    if(num_faces(primal) == 0)
+    if(!remesh_primal(primal_out.vertex_color_map(primal_colors)))
       return finish();
-    planes_pool.decompositions.reserve(num_faces(primal)); // one per dual vertex of a face
     stats.dual = dualize(primal, quads, dual_in.vertex_color_map(primal_colors),
                          dual_out.vertex_color_map(get_parameter(np_out, CGAL::internal_np::vertex_color_map)));
   } else {
-    stats.primal = primal_remesh<ConcurrencyTag>(tm, primal, np, primal_out);
-    if(num_faces(primal) == 0)
+    if(!remesh_primal(primal_out))
       return finish();
-    planes_pool.decompositions.reserve(num_faces(primal)); // one per dual vertex of a face
     stats.dual = dualize(primal, quads, dual_in, dual_out);
   }
   if(stats.dual.quads + stats.dual.non_quads == 0)

@@ -22,6 +22,7 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <array>
 #include <cstddef>
 #include <deque>
 #include <optional>
@@ -36,10 +37,11 @@ namespace internal {
 /// remembered for them (with the matrix each was made from).
 struct Tangent_planes_pool
 {
-  struct Decomposition
+  struct Decomposition // of `matrix`; the rest of a `Quadric_eigen` comes with the quadric
   {
     Matrix3 matrix;
-    Quadric_eigen eigen;
+    Vec3 values;
+    std::array<Vec3, 3> vectors;
   };
   std::deque<Tangent_planes> planes;
   // a vector: nothing holds references to these, and a deque would allocate a block
@@ -73,7 +75,7 @@ public:
   /// Keeps `eigen`, the decomposition of `quadric`, for v.
   void remember(key_type v, const Quadric& quadric, const Quadric_eigen& eigen) const
   {
-    pool_->decompositions[slot(v)] = Tangent_planes_pool::Decomposition{quadric.matrix(), eigen};
+    pool_->decompositions[slot(v)] = Tangent_planes_pool::Decomposition{quadric.matrix(), eigen.values, eigen.vectors};
   }
 
   /// The decomposition of `quadric`: v's remembered one if it was made from the same
@@ -82,7 +84,7 @@ public:
   {
     const auto& remembered = pool_->decompositions[slot(v)];
     if(remembered && remembered->matrix == quadric.matrix())
-      return Quadric_eigen(quadric, remembered->eigen);
+      return Quadric_eigen(quadric, remembered->values, remembered->vectors);
     return Quadric_eigen(quadric);
   }
 

@@ -301,10 +301,9 @@ struct Quadric_eigen
       symmetric_eigen_3(q.a_, values, vectors);
   }
 
-  /// q's, with the eigen-decomposition of q's matrix made earlier (`reused`'s, which
-  /// must come from a quadric with the same matrix).
-  Quadric_eigen(const Quadric& q, const Quadric_eigen& reused)
-      : b(q.b_), planes(q.planes_), values(reused.values), vectors(reused.vectors)
+  /// q's, with the eigenvalues and eigenvectors of q's matrix found earlier.
+  Quadric_eigen(const Quadric& q, const Vec3& known_values, const std::array<Vec3, 3>& known_vectors)
+      : b(q.b_), planes(q.planes_), values(known_values), vectors(known_vectors)
   {}
 
   Vec3 b;
