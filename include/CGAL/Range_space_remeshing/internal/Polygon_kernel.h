@@ -31,7 +31,7 @@ inline void keep_left_of(std::vector<Vec3>& convex, const Vec3& a, const Vec3& b
   scratch.clear();
   for(std::size_t i = 0; i < convex.size(); ++i) {
     const Vec3& p = convex[i];
-    const Vec3& q = convex[(i + 1) % convex.size()];
+    const Vec3& q = convex[next_corner(i, convex.size())];
     const double sp = turn(a, b, p), sq = turn(a, b, q);
     if(sp >= 0)
       scratch.push_back(p);
@@ -49,7 +49,7 @@ inline Vec3 closest_on_sides(const std::vector<Vec3>& polygon, const Vec3& x)
   Vec3 best = polygon.front();
   double best_d2 = std::numeric_limits<double>::infinity();
   for(std::size_t i = 0; i < polygon.size(); ++i) {
-    const Vec3 c = closest_on_segment(x, polygon[i], polygon[(i + 1) % polygon.size()]);
+    const Vec3 c = closest_on_segment(x, polygon[i], polygon[next_corner(i, polygon.size())]);
     const double d2 = dot(difference(x, c), difference(x, c));
     if(d2 < best_d2) {
       best_d2 = d2;
@@ -64,7 +64,7 @@ inline Vec3 closest_in_convex(const std::vector<Vec3>& convex, const Vec3& x)
 {
   bool inside = true;
   for(std::size_t i = 0; i < convex.size() && inside; ++i)
-    inside = turn(convex[i], convex[(i + 1) % convex.size()], x) >= 0;
+    inside = turn(convex[i], convex[next_corner(i, convex.size())], x) >= 0;
   return inside ? x : closest_on_sides(convex, x);
 }
 
@@ -81,13 +81,13 @@ inline bool encloses_nothing(const std::vector<Vec3>& polygon, const Vec3& norma
   const std::size_t n = polygon.size();
   for(std::size_t i = 0; i < n; ++i) {
     const Vec3& a = polygon[i];
-    const Vec3& b = polygon[(i + 1) % n];
+    const Vec3& b = polygon[next_corner(i, n)];
     const Vec3 mid = {{(a[0] + b[0]) / 2, (a[1] + b[1]) / 2, (a[2] + b[2]) / 2}};
     bool retraced = false;
     for(std::size_t j = 0; j < n && !retraced; ++j) {
       if(j == i)
         continue;
-      const Vec3 c = closest_on_segment(mid, polygon[j], polygon[(j + 1) % n]);
+      const Vec3 c = closest_on_segment(mid, polygon[j], polygon[next_corner(j, n)]);
       retraced = dot(difference(mid, c), difference(mid, c)) <= tolerance2;
     }
     if(!retraced)
@@ -133,7 +133,7 @@ inline Vec3 into_polygon_kernel(const std::vector<Vec3>& polygon, const Vec3& ar
   }
   std::vector<Vec3> kernel = {low, {{high[0], low[1], 0}}, high, {{low[0], high[1], 0}}}, scratch;
   for(std::size_t i = 0; i < corners.size() && !kernel.empty(); ++i)
-    keep_left_of(kernel, corners[i], corners[(i + 1) % corners.size()], scratch);
+    keep_left_of(kernel, corners[i], corners[next_corner(i, corners.size())], scratch);
   if(kernel.size() < 3)
     return x;
   const Vec3 x_flat = flat(x);
