@@ -29,6 +29,7 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -216,45 +217,57 @@ void measure_dimensions(const std::string& name, Mesh input, std::size_t target,
   // ratio compares runs made milliseconds apart. The benchmark machine's speed drifts:
   // the median of the same series measured a few minutes apart differed by up to 1.7x,
   // which three series one after the other would report as a cost of the dimension.
-  const int dimensions[3] = {3, 6, 9};
-  double h[3];
-  std::size_t vertices[3] = {0, 0, 0}, faces[3] = {0, 0, 0};
-  std::vector<double> times[3], normal_times[3], ratio[3], ratio_without_normals[3], face_ratio[3],
-      face_ratio_without_normals[3];
+  // One dimension's runs, and per round its cost per output vertex and per output face
+  // over D = 3's, with and without the pass that computes the input's normals.
+  struct Series
+  {
+    int dimension;
+    double cell_size = 0;
+    std::size_t vertices = 0, faces = 0;
+    std::vector<double> times, normal_times, vertex_ratio, vertex_ratio_without_normals, face_ratio,
+        face_ratio_without_normals;
+  };
+  std::array<Series, 3> series = {{{3}, {6}, {9}}};
   double normals_ms = 0;
-  for(int k = 0; k < 3; ++k) {
-    h[k] = benchmark_support::cell_size_for(
+  for(Series& s : series) {
+    s.cell_size = benchmark_support::cell_size_for(
         [&](double h) {
-          timed(h, dimensions[k], vertices[k], faces[k], normals_ms);
-          return vertices[k];
+          timed(h, s.dimension, s.vertices, s.faces, normals_ms);
+          return s.vertices;
         },
         0.01 * diagonal, target);
-    timed(h[k], dimensions[k], vertices[k], faces[k], normals_ms); // warm-up
+    timed(s.cell_size, s.dimension, s.vertices, s.faces, normals_ms); // warm-up
   }
+  struct Costs
+  {
+    double per_vertex, per_vertex_without_normals, per_face, per_face_without_normals;
+  };
   for(int r = 0; r < runs; ++r) {
-    double per_vertex[3], per_vertex_without_normals[3], per_face[3], per_face_without_normals[3];
+    std::array<Costs, 3> costs;
     for(int k = 0; k < 3; ++k) {
-      times[k].push_back(timed(h[k], dimensions[k], vertices[k], faces[k], normals_ms));
-      normal_times[k].push_back(normals_ms);
-      per_vertex[k] = times[k].back() / double(vertices[k]);
-      per_vertex_without_normals[k] = (times[k].back() - normals_ms) / double(vertices[k]);
-      per_face[k] = times[k].back() / double(faces[k]);
-      per_face_without_normals[k] = (times[k].back() - normals_ms) / double(faces[k]);
+      Series& s = series[k];
+      const double ms = timed(s.cell_size, s.dimension, s.vertices, s.faces, normals_ms);
+      s.times.push_back(ms);
+      s.normal_times.push_back(normals_ms);
+      costs[k] = {ms / double(s.vertices), (ms - normals_ms) / double(s.vertices), ms / double(s.faces),
+                  (ms - normals_ms) / double(s.faces)};
     }
     for(int k = 0; k < 3; ++k) {
-      ratio[k].push_back(per_vertex[k] / per_vertex[0]);
-      ratio_without_normals[k].push_back(per_vertex_without_normals[k] / per_vertex_without_normals[0]);
-      face_ratio[k].push_back(per_face[k] / per_face[0]);
-      face_ratio_without_normals[k].push_back(per_face_without_normals[k] / per_face_without_normals[0]);
+      Series& s = series[k];
+      s.vertex_ratio.push_back(costs[k].per_vertex / costs[0].per_vertex);
+      s.vertex_ratio_without_normals.push_back(costs[k].per_vertex_without_normals /
+                                               costs[0].per_vertex_without_normals);
+      s.face_ratio.push_back(costs[k].per_face / costs[0].per_face);
+      s.face_ratio_without_normals.push_back(costs[k].per_face_without_normals / costs[0].per_face_without_normals);
     }
   }
-  for(int k = 0; k < 3; ++k) {
-    const double ms = median(times[k]);
+  for(const Series& s : series) {
+    const double ms = median(s.times);
     char line[256];
     std::snprintf(line, sizeof(line), "| %s | %d | %zu | %zu | %.2f | %.2f | %.0f | %.2f | %.2f | %.2f | %.2f |",
-                  name.c_str(), dimensions[k], vertices[k], faces[k], ms, median(normal_times[k]),
-                  1e6 * ms / double(vertices[k]), median(ratio[k]), median(ratio_without_normals[k]),
-                  median(face_ratio[k]), median(face_ratio_without_normals[k]));
+                  name.c_str(), s.dimension, s.vertices, s.faces, ms, median(s.normal_times),
+                  1e6 * ms / double(s.vertices), median(s.vertex_ratio), median(s.vertex_ratio_without_normals),
+                  median(s.face_ratio), median(s.face_ratio_without_normals));
     std::cout << line << std::endl;
   }
 }
