@@ -39,6 +39,7 @@
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <unistd.h>
@@ -97,7 +98,8 @@ const char* usage =
     "  --target-vertices N   choose H so that the output has N vertices (within 10%)\n"
     "  --max-vertices N      refuse a cell size whose primal remesh would have more\n"
     "                          than N vertices (default: the library's 10 million, or\n"
-    "                          fewer if the available memory would not hold the run:\n"
+    "                          fewer if the available memory (or a container's\n"
+    "                          limit) would not hold the run:\n"
     "                          about 1.3 KB per vertex, 0.4 KB with --output primal)\n"
     "  --output KIND         dual (the default): all quads, one vertex per grid-cell\n"
     "                        piece of the surface; primal: the pieces themselves as\n"
@@ -576,16 +578,38 @@ struct Defect_collector
   void operator()(const RSR::Topology_defect<Mesh::Face_index>& defect) const { defects->push_back(defect); }
 };
 
-/// The memory the system can still give, in bytes (Linux' MemAvailable), or 0 if unknown.
+/// The first number in the file (0 if none: "max", a missing file).
+double number_in_file(const char* path)
+{
+  std::ifstream in(path);
+  double x = 0;
+  return in >> x ? x : 0;
+}
+
+/// The memory this process can still take, in bytes: Linux' MemAvailable, or less
+/// inside a container whose memory limit (cgroup v2, else v1) is lower; 0 if unknown.
 double available_memory()
 {
   std::ifstream meminfo("/proc/meminfo");
   std::string key, unit;
-  double kilobytes = 0;
+  double kilobytes = 0, available = 0;
   while(meminfo >> key >> kilobytes >> unit)
-    if(key == "MemAvailable:")
-      return kilobytes * 1024;
-  return 0;
+    if(key == "MemAvailable:") {
+      available = kilobytes * 1024;
+      break;
+    }
+  const std::pair<const char*, const char*> limits[] = {
+      {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory.current"},
+      {"/sys/fs/cgroup/memory/memory.limit_in_bytes", "/sys/fs/cgroup/memory/memory.usage_in_bytes"}};
+  for(const auto& [limit_file, usage_file] : limits) {
+    const double limit = number_in_file(limit_file); // no limit: "max" (0 here) or about 2^63
+    if(limit > 0 && limit < 1e18) {
+      const double left = (std::max)(limit - number_in_file(usage_file), 1.0);
+      if(available == 0 || left < available)
+        available = left;
+    }
+  }
+  return available;
 }
 
 /// The cap on the primal remesh's vertices: --max-vertices, or the library's default
