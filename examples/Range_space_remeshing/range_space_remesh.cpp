@@ -165,7 +165,7 @@ struct Options
   std::string topology_report; // file of the flagged input faces
   std::vector<RSR::Topology_defect<Mesh::Face_index>>* defects = nullptr; // filled by the check
   long target_vertices = 0;
-  std::size_t max_vertices = 0; // 0: from the available memory (vertex_cap())
+  std::size_t max_vertices = 0; // --max-vertices; main() sets the default (vertex_cap()) once
 };
 
 double parse_number(const std::string& option, const char* text)
@@ -649,7 +649,7 @@ RSR::Remesh_statistics remesh(const Mesh& input, const Input_normals& normals, d
                                             CGAL::parameters::grid_spacing(h)
                                                 .seeding_method(seeding)
                                                 .number_of_relaxation_steps(options.relax)
-                                                .maximum_number(vertex_cap(options)))));
+                                                .maximum_number(options.max_vertices))));
   const auto points = get(CGAL::vertex_point, input);
   if(options.map == "gauss")
     return run_with_colors(
@@ -850,6 +850,8 @@ int main(int argc, char** argv)
     options.defects = &defects;
     bool triangulated = false;
     const Mesh input = with_creases_opened(read_input(options.input, triangulated), options);
+    // once, the input read: the runs of --target-vertices and --preserve-topology share it
+    options.max_vertices = vertex_cap(options);
     if(!is_supported_format(options.output))
       fail("cannot write '" + options.output + "': unsupported format (use .off .obj .ply .stl)");
     if(!options.topology_report.empty() && !is_supported_format(options.topology_report))
