@@ -372,7 +372,7 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
                             built if the estimate made from the faces' areas in the range
                             exceeds it}
       \cgalParamDefault{`default_maximum_number_of_vertices` (10,000,000)}
-      \cgalParamExtra{memory: about 0.3 KB per vertex for `primal_remesh()`, 1.3 KB for
+      \cgalParamExtra{memory: about 0.4 KB per vertex for `primal_remesh()`, 1.3 KB for
                       `remesh()`, so the default cap holds a run within about 13 GB}
     \cgalParamNEnd
     \cgalParamNBegin{check_topology}
