@@ -27,6 +27,7 @@
 #include <CGAL/Range_space_remeshing/internal/Lazily_zeroed_array.h>
 #include <CGAL/Range_space_remeshing/internal/Level_differences.h>
 #include <CGAL/Range_space_remeshing/internal/Perturbed_predicates.h>
+#include <CGAL/Range_space_remeshing/internal/Prefetch.h>
 #include <CGAL/Range_space_remeshing/internal/Vertex_table.h>
 
 #include <CGAL/Exact_rational.h>
@@ -1084,6 +1085,12 @@ private:
       if(untraced_pieces_)
         --untraced_pieces_[f];
       const Triangle t = load(f);
+      // The arc's next face is one of these: its record (the step's first wait for
+      // memory, as the faces around an arc lie anywhere in the input's order) is on
+      // its way while this face's tests run.
+      for(std::uint32_t n : records_[f].neighbour)
+        if(n != border)
+          prefetch(&records_[n]);
       const int e = exit_edge(t, P, level, sigma);
       const Point_d& a = *t.p[e];
       const Point_d& b = *t.p[(e + 1) % 3];

@@ -1,0 +1,37 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_PREFETCH_H
+#define CGAL_RANGE_SPACE_REMESHING_INTERNAL_PREFETCH_H
+
+// A hint that an object will be read soon, for walks whose next address is known a
+// step ahead of its use.
+
+#include <cstddef>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+namespace internal {
+
+/// Asks for every cache line of `*object` to be loaded, without waiting for it;
+/// nothing where the compiler has no prefetch intrinsic. Never changes a result.
+template <class T>
+inline void prefetch(const T* object)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  constexpr std::size_t line = 64;
+  const char* bytes = reinterpret_cast<const char*>(object);
+  for(std::size_t offset = 0; offset < sizeof(T); offset += line)
+    __builtin_prefetch(bytes + offset);
+#else
+  (void)object;
+#endif
+}
+
+} // namespace internal
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_INTERNAL_PREFETCH_H
