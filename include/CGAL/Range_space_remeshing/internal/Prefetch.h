@@ -15,8 +15,11 @@ namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
 
-/// Asks for every cache line of `*object` to be loaded, without waiting for it;
-/// nothing where the compiler has no prefetch intrinsic. Never changes a result.
+/// Asks for the cache lines at every 64 bytes from the start of `*object` to be
+/// loaded, without waiting for them (all its lines when it starts on one: asking also
+/// for the last line of an object that straddles one more made no measurable
+/// difference); nothing where the compiler has no prefetch intrinsic. Never changes a
+/// result.
 template <class T>
 inline void prefetch(const T* object)
 {
