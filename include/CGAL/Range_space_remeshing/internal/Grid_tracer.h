@@ -1368,6 +1368,30 @@ private:
   }
 
 public:
+  /// The input corners of the intersection vertex's triangle, in the order of
+  /// `barycentric_coordinates()`: read from its record, which holds them already
+  /// (where going through the mesh from `face_of()` would read four more places).
+  std::array<vertex_descriptor, 3> corners_of(const Vertex& v) const
+  {
+    const Face_record& r = records_[v.face_id]; // recorded: v was created in it
+    return {{vertex_of_id_[r.vertex[0]], vertex_of_id_[r.vertex[1]], vertex_of_id_[r.vertex[2]]}};
+  }
+
+  /// Asks for the record of the vertex's triangle: the first of what
+  /// `barycentric_coordinates()` and `corners_of()` read, and the one that says where
+  /// the rest is (see `prefetch_corners_of()`, a few vertices later).
+  void prefetch_record_of(const Vertex& v) const { prefetch(&records_[v.face_id]); }
+
+  /// Asks for the rest, once the record is in the cache: the mapped corners and their
+  /// descriptors.
+  void prefetch_corners_of(const Vertex& v) const
+  {
+    for(std::uint32_t corner : records_[v.face_id].vertex) {
+      prefetch(&mapped_vertices_[corner]);
+      prefetch(&vertex_of_id_[corner]);
+    }
+  }
+
   /// Barycentric coordinates of the intersection vertex in its triangle, in the
   /// order source(halfedge(f)), target(halfedge(f)), target(next(halfedge(f))).
   std::array<double, 3> barycentric_coordinates(const Vertex& v)

@@ -10,6 +10,7 @@
 // step ahead of its use.
 
 #include <cstddef>
+#include <type_traits>
 
 namespace CGAL {
 namespace Range_space_remeshing {
@@ -31,6 +32,15 @@ inline void prefetch(const T* object)
 #else
   (void)object;
 #endif
+}
+
+/// Asks for the value of `key` in a property map that returns it by reference (as
+/// `Surface_mesh`'s maps do); nothing for one that computes it.
+template <class PropertyMap, class Key>
+inline void prefetch_value(const PropertyMap& map, const Key& key)
+{
+  if constexpr(std::is_lvalue_reference<decltype(get(map, key))>::value)
+    prefetch(&get(map, key));
 }
 
 } // namespace internal

@@ -15,6 +15,7 @@
 #include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Color.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
+#include <CGAL/Range_space_remeshing/internal/Prefetch.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
@@ -139,6 +140,10 @@ Normals_at_point normals_on_sides(const PointArray& points, const std::array<Vec
   return {normals[other], lone_side};
 }
 
+/// Output vertices ahead whose triangle's corners are asked for; the record that says
+/// where the corners are is asked for twice as far ahead.
+constexpr std::uint32_t output_lookahead = 8;
+
 template <class TriangleMesh, class VPM, class VertexIndexMap, class Tracer, class PolygonMesh,
           class NamedParametersIn, class NamedParametersOut>
 void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex_index, Tracer& tracer,
@@ -197,11 +202,24 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
   std::vector<out_vertex> vertex_of(vertices.size());
   std::size_t number_of_vertices = 0;
   for(std::uint32_t v = 0; v < vertices.size(); ++v) {
+    // The vertices' triangles lie anywhere in the input: what a vertex reads is asked
+    // for ahead, its triangle's record first, then what the record points to.
+    if(v + 2 * output_lookahead < vertices.size())
+      tracer.prefetch_record_of(vertices[v + 2 * output_lookahead]);
+    if(v + output_lookahead < vertices.size())
+      tracer.prefetch_corners_of(vertices[v + output_lookahead]);
+    if(v + output_lookahead / 2 < vertices.size())
+      for(in_vertex corner : tracer.corners_of(vertices[v + output_lookahead / 2])) {
+        prefetch_value(vpm, corner);
+        if constexpr(needs_corner_normals && has_input_normals)
+          prefetch_value(given_normals, corner);
+        if constexpr(wants_colors)
+          prefetch_value(input_colors, corner);
+      }
     if(!complex.is_kept(v))
       continue;
     const auto w = tracer.barycentric_coordinates(vertices[v]);
-    const auto h0 = halfedge(tracer.face_of(vertices[v]), tm);
-    const std::array<in_vertex, 3> corners = {{source(h0, tm), target(h0, tm), target(next(h0, tm), tm)}};
+    const std::array<in_vertex, 3> corners = tracer.corners_of(vertices[v]);
     const std::array<In_point, 3> corner_points = {{get(vpm, corners[0]), get(vpm, corners[1]), get(vpm, corners[2])}};
     std::array<double, 3> p = {{0, 0, 0}}, rgb = {{0, 0, 0}};
     std::array<Vec3, 3> corner_normals;
