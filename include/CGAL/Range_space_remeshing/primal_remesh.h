@@ -29,6 +29,7 @@
 #include <memory>
 #include <tuple>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -175,7 +176,7 @@ std::unique_ptr<Primal_complex> trace_primal_complex(const TriangleMesh& tm, Tra
     positive[v] = vertices[v].orientation > 0;
     boundary[v] = vertices[v].is_boundary();
   }
-  auto complex = std::make_unique<Primal_complex>(links, positive, boundary);
+  auto complex = std::make_unique<Primal_complex>(std::move(links), positive, boundary);
   stats.time_faces_ms = milliseconds_since(start);
 
   stats.mapped_vertices = tracer.number_of_mapped_vertices();

@@ -30,6 +30,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <numeric>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -50,11 +51,11 @@ public:
   /// `links[4*v+s]` is the twin of halfedge 4*v+s, `positive[v]` the sign of the
   /// projected orientation of vertex v, `boundary[v]` whether it is a boundary vertex
   /// (then slot 3 is unused, and slot 1 too at a corner: links of unused slots are `none`).
-  Primal_complex(const std::vector<std::uint32_t>& links, const std::vector<bool>& positive,
+  Primal_complex(std::vector<std::uint32_t> links, const std::vector<bool>& positive,
                  const std::vector<bool>& boundary)
     : number_of_vertices_(std::uint32_t(positive.size())), boundary_(boundary)
   {
-    build_rotation(links, positive);
+    build_rotation(std::move(links), positive);
     trace_faces();
     merge_digons();
     to_halfedges();
@@ -100,11 +101,10 @@ public:
 
 private:
   // ---------------------------------------------------------- rotation system
-  void build_rotation(const std::vector<std::uint32_t>& links,
-                      const std::vector<bool>& positive)
+  void build_rotation(std::vector<std::uint32_t> links, const std::vector<bool>& positive)
   {
     const std::size_t n = links.size();
-    twin_ = links;
+    twin_ = std::move(links); // the twins, until digons are merged
     ccw_next_.resize(n);
     ccw_prev_.resize(n);
     alive_.assign(n, 1);
@@ -117,7 +117,7 @@ private:
     for(std::uint32_t v = 0; v < number_of_vertices_; ++v)
       if(boundary_[v])
         for(std::uint32_t s : {1, 3})
-          if(links[4 * v + s] == none) // slot 3, and the arc slot of a corner
+          if(twin_[4 * v + s] == none) // slot 3, and the arc slot of a corner
             remove_from_rotation(4 * v + s);
   }
 
@@ -145,6 +145,7 @@ private:
         traced_face_corners_.push_back({h, ccw_next_[h] % 4});
       alive_halfedges += degree;
     }
+    alive_halfedges_ = alive_halfedges;
     traced_euler_characteristic_ = long(number_of_vertices_) - long(alive_halfedges / 2) +
                                    long(traced_face_corners_.size());
   }
@@ -180,6 +181,9 @@ private:
   void to_halfedges()
   {
     std::vector<std::uint32_t> new_id(twin_.size(), none);
+    // merging digons removes halfedges, a split of a pinched face (rare) adds two
+    halfedges_.reserve(alive_halfedges_);
+    face_halfedge_.reserve(orbit_start_.size());
     for(std::uint32_t h = 0; h < twin_.size(); ++h)
       if(alive_[h]) {
         new_id[h] = std::uint32_t(halfedges_.size());
@@ -349,6 +353,7 @@ private:
   std::vector<Traced_face_corner> traced_face_corners_;
   long traced_euler_characteristic_ = 0, euler_characteristic_ = 0;
   std::size_t components_ = 0;
+  std::size_t alive_halfedges_ = 0; // in the rotation system, as traced
   // rotation system
   std::vector<std::uint32_t> twin_, ccw_next_, ccw_prev_;
   std::vector<std::uint8_t> alive_;
