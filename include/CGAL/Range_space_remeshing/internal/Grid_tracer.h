@@ -209,13 +209,21 @@ public:
   /// cache lines each at D = 9) does not wait for memory.
   void record_all_faces()
   {
+    list_faces_in_scan_order();
+    for(std::uint32_t face_id : all_face_ids_)
+      record(face_id);
+  }
+
+  /// The order of a complete scan, sequential or parallel: the faces' indices in the
+  /// order of `faces(tm)`, in `all_face_ids_`, and their descriptors in `face_of_id_`.
+  void list_faces_in_scan_order()
+  {
     all_face_ids_.clear();
     all_face_ids_.reserve(num_faces(tm_));
     for(face_descriptor f : faces(tm_)) {
       const std::uint32_t face_id = std::uint32_t(get(face_index_, f));
       face_of_id_[face_id] = f;
       all_face_ids_.push_back(face_id);
-      record(face_id);
     }
   }
 
@@ -268,14 +276,9 @@ public:
                       });
     number_of_mapped_ = all_vertices.size();
 
-    const std::vector<face_descriptor> all_faces(faces(tm_).begin(), faces(tm_).end());
-    all_face_ids_.resize(all_faces.size());
-    for(std::size_t i = 0; i < all_faces.size(); ++i) {
-      all_face_ids_[i] = std::uint32_t(get(face_index_, all_faces[i]));
-      face_of_id_[all_face_ids_[i]] = all_faces[i];
-    }
+    list_faces_in_scan_order();
     std::atomic<bool> border_seen(false);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, all_faces.size(), 2048),
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, all_face_ids_.size(), 2048),
                       [&](const tbb::blocked_range<std::size_t>& range) {
                         bool border_here = false;
                         for(std::size_t i = range.begin(); i != range.end(); ++i) {
@@ -289,7 +292,7 @@ public:
                           border_seen = true;
                       });
     seen_border_ = seen_border_ || border_seen;
-    number_of_visited_faces_ = all_faces.size();
+    number_of_visited_faces_ = all_face_ids_.size();
   }
 
   /// The second half: the exact tests of every face on all threads, then, on this
