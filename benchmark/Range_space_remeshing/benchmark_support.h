@@ -10,7 +10,9 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 
 #include <algorithm>
 #include <cmath>
@@ -28,6 +30,28 @@ inline double median(std::vector<double> v)
 {
   std::sort(v.begin(), v.end());
   return v[v.size() / 2];
+}
+
+/// Triangulates every face: with PMP where it can, and the faces it leaves (a non-planar
+/// polygon whose projection crosses itself, such as the few larger faces the dual
+/// keeps where it joins two faces) as a fan from one corner. A non-planar polygon has
+/// no one surface; the fan is one reading of it, and changes the distances on that
+/// face only. Returns the number of faces fanned.
+inline std::size_t triangulate_all_faces(Mesh& m)
+{
+  if(CGAL::Polygon_mesh_processing::triangulate_faces(m))
+    return 0;
+  std::vector<Mesh::Face_index> left;
+  for(auto f : faces(m))
+    if(degree(f, m) > 3)
+      left.push_back(f);
+  for(auto f : left) {
+    const auto into_corner = prev(halfedge(f, m), m); // its target is the fan's corner
+    // each split cuts the triangle (corner, next two corners) off the face left
+    while(next(next(next(into_corner, m), m), m) != into_corner)
+      CGAL::Euler::split_face(into_corner, next(next(into_corner, m), m), m);
+  }
+  return left.size();
 }
 
 inline double bbox_diagonal(const Mesh& m)

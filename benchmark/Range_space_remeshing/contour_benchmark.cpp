@@ -115,8 +115,8 @@ void measure_topology_check(const std::string& name, const Mesh& input, double h
 std::pair<double, double> sampled_distance(const Mesh& from, const Mesh& to, std::size_t samples)
 {
   Mesh a = from, b = to;
-  CGAL::Polygon_mesh_processing::triangulate_faces(a);
-  CGAL::Polygon_mesh_processing::triangulate_faces(b);
+  triangulate_all_faces(a);
+  triangulate_all_faces(b);
   return rms_and_max_distance(a, b, samples);
 }
 

@@ -19,7 +19,8 @@
 // Times are of the algorithms only (no IO, no copies). Distances are METRO-style,
 // after scaling to unit bounding-box diagonal: points sampled on each mesh, the
 // distance to the other one; RMS is the larger of the two one-sided RMS values,
-// Hausdorff the larger of the two maxima. Prints Markdown on stdout.
+// Hausdorff the larger of the two maxima; polygons are triangulated first (see
+// triangulate_all_faces()). Prints Markdown on stdout.
 
 #include <CGAL/Range_space_remeshing/Color_range_maps.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
@@ -121,8 +122,7 @@ Quality quality(const Mesh& output, const Mesh& input, double diagonal, std::siz
   q.regular_percent = 100. * double(regular) / double(num_vertices(output));
   q.min_angle = min_corner_angle(output);
   Mesh triangles = output;
-  if(!PMP::triangulate_faces(triangles))
-    return q; // a face PMP cannot triangulate: no distances rather than wrong ones
+  triangulate_all_faces(triangles);
   const auto forward = rms_and_max_distance(triangles, input, 200000);
   const auto backward = rms_and_max_distance(input, triangles, 200000);
   q.rms = std::max(forward.first, backward.first) / diagonal;
@@ -132,7 +132,7 @@ Quality quality(const Mesh& output, const Mesh& input, double diagonal, std::siz
 
 std::string quality_columns(const Quality& q)
 {
-  if(std::isnan(q.rms)) // PMP could not triangulate a (non-planar) primal polygon
+  if(std::isnan(q.rms)) // an empty output
     return format("– | – | %.1f %% | %.1f°", q.regular_percent, q.min_angle);
   return format("%.3g | %.3g | %.1f %% | %.1f°", q.rms, q.hausdorff, q.regular_percent, q.min_angle);
 }
@@ -351,7 +351,10 @@ void table_peers(const std::vector<Model>& models, const std::vector<Pipeline_re
             << peer_runs
             << " runs after a warm-up, one thread. Speed-up: the peer's median time over our whole pipeline's "
                "(best: the fastest run, a steadier figure on this shared machine). Regular "
-               "vertices: valence 4 in quad meshes, 6 in triangle meshes.\n\n"
+               "vertices: valence 4 in quad meshes, 6 in triangle meshes. Distances of polygon meshes: of "
+               "their triangulation by PMP, where a face it cannot triangulate (a non-planar polygon whose "
+               "projection crosses itself: a few primal polygons, and faces the dual joins) is a fan "
+               "from one corner.\n\n"
                "| model | method | output vertices | ms | best ms | speed-up | RMS | Hausdorff | regular vertices | min angle |\n"
                "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for(std::size_t i = 0; i < models.size(); ++i) {
