@@ -40,8 +40,10 @@ class Lazily_zeroed_array
 {
   static_assert(std::is_trivially_copyable<T>::value, "Lazily_zeroed_array: T must be trivially copyable");
   // Below this, malloc or calloc. glibc maps blocks above its own threshold (at most
-  // 32 MB) afresh on every call, but serves smaller ones from memory freed by the last
-  // run, which repeated runs (an animation, a benchmark) then find already in place.
+  // 32 MB) afresh on every call, and serves smaller ones from its heap, where repeated
+  // runs (an animation, a benchmark) find the memory the last run freed, unless glibc
+  // gave it back to the system meanwhile, which depends on the program's other
+  // allocations (see the manual's paragraph on repeated runs).
   static constexpr std::size_t huge_page = std::size_t(2) << 20, mapped_from = std::size_t(32) << 20;
 
   struct Release
