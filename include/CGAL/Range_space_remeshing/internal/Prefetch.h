@@ -35,7 +35,9 @@ inline void prefetch(const T* object)
 }
 
 /// Asks for the value of `key` in a property map that returns it by reference (as
-/// `Surface_mesh`'s maps do); nothing for one that computes it.
+/// `Surface_mesh`'s maps do); nothing for one that computes it. Such a map's `get()`
+/// is called once more: an address computation for an array, a second lookup (with the
+/// same effects as the first) for an associative map.
 template <class PropertyMap, class Key>
 inline void prefetch_value(const PropertyMap& map, const Key& key)
 {
