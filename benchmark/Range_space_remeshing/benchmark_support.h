@@ -36,11 +36,11 @@ inline double median(std::vector<double> v)
 /// polygon whose projection crosses itself, such as the few larger faces the dual
 /// keeps where it joins two faces) as a fan from one corner. A non-planar polygon has
 /// no one surface; the fan is one reading of it, and changes the distances on that
-/// face only. Returns the number of faces fanned.
-inline std::size_t triangulate_all_faces(Mesh& m)
+/// face only.
+inline void triangulate_all_faces(Mesh& m)
 {
   if(CGAL::Polygon_mesh_processing::triangulate_faces(m))
-    return 0;
+    return;
   std::vector<Mesh::Face_index> left;
   for(auto f : faces(m))
     if(degree(f, m) > 3)
@@ -51,7 +51,6 @@ inline std::size_t triangulate_all_faces(Mesh& m)
     while(next(next(next(into_corner, m), m), m) != into_corner)
       CGAL::Euler::split_face(into_corner, next(next(into_corner, m), m), m);
   }
-  return left.size();
 }
 
 inline double bbox_diagonal(const Mesh& m)

@@ -1389,10 +1389,9 @@ public:
   /// descriptors.
   void prefetch_corners_of(const Vertex& v) const
   {
-    for(std::uint32_t corner : records_[v.face_id].vertex) {
-      prefetch(&mapped_vertices_[corner]);
+    prefetch_corners(v.face_id);
+    for(std::uint32_t corner : records_[v.face_id].vertex)
       prefetch(&vertex_of_id_[corner]);
-    }
   }
 
   /// Barycentric coordinates of the intersection vertex in its triangle, in the
