@@ -444,6 +444,61 @@ void table_parallel(const std::vector<Model>& models, const std::vector<double>&
 }
 #endif
 
+/// The same jobs on a copy of each input stored in spatial order
+/// (`spatially_ordered_copy()`): the contouring at n = 3 and the whole pipeline at n = 6,
+/// at the cell sizes of the first table, the two orders interleaved run by run.
+void table_input_order(const std::vector<Model>& models, const std::vector<double>& identity_h,
+                       const std::vector<Pipeline_result>& six, int runs)
+{
+  std::cout << "\n## Input order\n\n"
+               "The same inputs stored in spatial order: faces along a Hilbert curve through their centroids, "
+               "vertices in the order those faces first use them (`spatially_ordered_copy()` in "
+               "`benchmark_support.h`; the same surface and points, made once, its time in the second column). "
+               "Primal contouring at n = 3 and whole pipeline at n = 6 at the cell sizes of the first table; "
+               "median of "
+            << runs
+            << " runs of each order, interleaved. The library leaves its input's order as it is: the tracing "
+               "walks from triangle to neighbouring triangle, and reads their records where the input's numbering "
+               "puts them.\n\n"
+               "| model | reordering ms (once) | contouring n = 3, file order ms | spatial order ms | speed-up | "
+               "pipeline n = 6, file order ms | spatial order ms | speed-up | same counts |\n"
+               "|---|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  for(std::size_t i = 0; i < models.size(); ++i) {
+    const Mesh& file_order = models[i].mesh;
+    const auto start = Clock::now();
+    Mesh spatial_order = spatially_ordered_copy(file_order);
+    const double reordering_ms = ms_since(start);
+    Mesh inputs[2] = {file_order, std::move(spatial_order)};
+    std::vector<double> contour[2], pipeline[2];
+    std::size_t primal_vertices[2] = {0, 0};
+    for(int r = 0; r <= runs; ++r) // run 0: the warm-up
+      for(int k = 0; k < 2; ++k) {
+        Mesh& input = inputs[k];
+        Mesh primal, quads;
+        const auto p = RSR::primal_remesh(input, primal, CGAL::parameters::grid_spacing(identity_h[i]));
+        // the normals as in the first table: computed in the timed run, given to the remesher
+        auto normals = input.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:normal").first;
+        const RSR::Position_normal_range_map f6(input.points(), normals, 1.0, normal_weight * models[i].diagonal);
+        const auto pipeline_start = Clock::now();
+        RSR::compute_vertex_normals(input, normals);
+        RSR::remesh(input, quads, RSR::parameters::range_map(f6).grid_spacing(six[i].h).vertex_normal_map(normals));
+        const double pipeline_ms = ms_since(pipeline_start);
+        primal_vertices[k] = num_vertices(primal);
+        if(r == 0)
+          continue;
+        contour[k].push_back(p.time_total_ms);
+        pipeline[k].push_back(pipeline_ms);
+      }
+    const double c0 = median(contour[0]), c1 = median(contour[1]), p0 = median(pipeline[0]), p1 = median(pipeline[1]);
+    std::cout << format("| %s | %.1f | %.2f | %.2f | %.2f | %.2f | %.2f | %.2f | %s |", models[i].name.c_str(),
+                        reordering_ms, c0, c1, c0 / c1, p0, p1, p0 / p1,
+                        primal_vertices[0] == primal_vertices[1] && num_faces(inputs[0]) == num_faces(inputs[1])
+                            ? "yes"
+                            : "NO")
+              << std::endl;
+  }
+}
+
 /// Least-squares slope of log(y) against log(x).
 double exponent(const std::vector<double>& x, const std::vector<double>& y)
 {
@@ -534,36 +589,42 @@ void table_deforming(const Model& model)
             << model.name
             << " twisting about its vertical axis (up to 1.5 radians over its height), remeshed from scratch every "
                "frame by the whole pipeline (identity map); 60 frames. Given seeds: one face per component, found "
-               "once before the first frame and passed to every frame by `seed_faces()`.\n\n"
-               "| cell size (diagonals) | seeding | quads per frame | ms per frame | frames per second |\n"
-               "|---:|---|---:|---:|---:|\n";
+               "once before the first frame and passed to every frame by `seed_faces()`. Spatial order: the input "
+               "stored once in spatial order before the first frame (see the input order table).\n\n"
+               "| cell size (diagonals) | input order | seeding | quads per frame | ms per frame | frames per second |\n"
+               "|---:|---|---|---:|---:|---:|\n";
   const CGAL::Bbox_3 box = PMP::bbox(model.mesh);
   const double height = box.zmax() - box.zmin();
   const int frames = 60;
-  const std::vector<Mesh::Face_index> seeds = one_face_per_component(model.mesh); // once, for all frames
-  for(double cell : {0.02, 0.01}) {
-    for(int mode = 0; mode < 3; ++mode) {
-      const auto seeding = mode == 0 ? RSR::Seeding_method::COMPLETE_SCAN : RSR::Seeding_method::SEEDED;
-      std::size_t quads = 0;
-      const auto start = Clock::now();
-      for(int frame = 0; frame < frames; ++frame) {
-        const Twisted_points twisted{&model.mesh, 1.5 / height * frame / frames, 0.5 * (box.xmin() + box.xmax()),
-                                     0.5 * (box.ymin() + box.ymax())};
-        const auto np = CGAL::parameters::vertex_point_map(twisted).grid_spacing(cell * model.diagonal).seeding_method(
-            seeding);
-        Mesh output;
-        if(mode == 2)
-          RSR::remesh(model.mesh, output, RSR::parameters::seed_faces(seeds, np));
-        else
-          RSR::remesh(model.mesh, output, np);
-        quads += num_faces(output);
+  const Mesh inputs[2] = {model.mesh, spatially_ordered_copy(model.mesh)};
+  for(double cell : {0.02, 0.01})
+    for(int order = 0; order < 2; ++order) {
+      const Mesh& input = inputs[order];
+      const std::vector<Mesh::Face_index> seeds = one_face_per_component(input); // once, for all frames
+      for(int mode = 0; mode < 3; ++mode) {
+        const auto seeding = mode == 0 ? RSR::Seeding_method::COMPLETE_SCAN : RSR::Seeding_method::SEEDED;
+        std::size_t quads = 0;
+        const auto start = Clock::now();
+        for(int frame = 0; frame < frames; ++frame) {
+          const Twisted_points twisted{&input, 1.5 / height * frame / frames, 0.5 * (box.xmin() + box.xmax()),
+                                       0.5 * (box.ymin() + box.ymax())};
+          const auto np = CGAL::parameters::vertex_point_map(twisted)
+                              .grid_spacing(cell * model.diagonal)
+                              .seeding_method(seeding);
+          Mesh output;
+          if(mode == 2)
+            RSR::remesh(input, output, RSR::parameters::seed_faces(seeds, np));
+          else
+            RSR::remesh(input, output, np);
+          quads += num_faces(output);
+        }
+        const double ms = ms_since(start) / frames;
+        const char* modes[] = {"complete", "seeded", "given seeds"};
+        std::cout << format("| %.2f | %s | %s | %zu | %.1f | %.0f |", cell, order == 0 ? "file" : "spatial",
+                            modes[mode], quads / frames, ms, 1000 / ms)
+                  << std::endl;
       }
-      const double ms = ms_since(start) / frames;
-      const char* names[] = {"complete", "seeded", "given seeds"};
-      std::cout << format("| %.2f | %s | %zu | %.1f | %.0f |", cell, names[mode], quads / frames, ms, 1000 / ms)
-                << std::endl;
     }
-  }
 }
 
 bool read_model(const std::string& file, Model& model)
@@ -615,6 +676,9 @@ int main(int argc, char** argv)
   for(std::size_t i = 0; i < files.size(); ++i)
     if(!read_model(files[i], models[i]))
       return 2;
+  std::cout << format("Memory latency at the start: %.0f ns (a load the caches do not hold: pointer chase through "
+                      "64 MB; it changes with the load of this shared machine, and the timings with it).\n\n",
+                      memory_latency_ns());
   if(!models.empty()) {
     std::vector<double> identity_h;
     const auto six = table_pipeline(models, runs, identity_h);
@@ -623,6 +687,7 @@ int main(int argc, char** argv)
 #endif
     if(peers)
       table_peers(models, six, runs, peer_runs);
+    table_input_order(models, identity_h, six, runs);
   }
   if(!scaling.empty()) {
     Model model;
@@ -636,5 +701,6 @@ int main(int argc, char** argv)
       return 2;
     table_deforming(model);
   }
+  std::cout << format("\nMemory latency at the end: %.0f ns.\n", memory_latency_ns());
   return 0;
 }
