@@ -10,13 +10,9 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
-#include <CGAL/hilbert_sort.h>
-#include <CGAL/property_map.h>
 
 #include <algorithm>
 #include <chrono>
@@ -59,52 +55,6 @@ inline void triangulate_all_faces(Mesh& m)
     while(next(next(next(into_corner, m), m), m) != into_corner)
       CGAL::Euler::split_face(into_corner, next(next(into_corner, m), m), m);
   }
-}
-
-/// A copy of `m` stored in spatial order: its faces along a Hilbert curve through their
-/// centroids, its vertices in the order those faces first use them. The same surface,
-/// connectivity and points; neighbouring triangles are then near each other in memory,
-/// which is what a walk across the surface reads (files often store their faces in
-/// the order a modeller or a refinement made them).
-inline Mesh spatially_ordered_copy(const Mesh& m)
-{
-  std::vector<K::Point_3> centroids;
-  std::vector<std::vector<std::size_t>> faces_by_corner;
-  for(auto f : faces(m)) {
-    std::vector<std::size_t> corners;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, m), m))
-      corners.push_back(std::size_t(v));
-    double sum[3] = {0, 0, 0};
-    for(std::size_t c : corners)
-      for(int d = 0; d < 3; ++d)
-        sum[d] += m.point(Mesh::Vertex_index(std::uint32_t(c)))[d];
-    const double n = double(corners.size());
-    centroids.emplace_back(sum[0] / n, sum[1] / n, sum[2] / n);
-    faces_by_corner.push_back(std::move(corners));
-  }
-  std::vector<std::size_t> order(centroids.size());
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  const auto centroid_of = CGAL::make_property_map(centroids);
-  CGAL::hilbert_sort(order.begin(), order.end(),
-                     CGAL::Spatial_sort_traits_adapter_3<K, decltype(centroid_of)>(centroid_of));
-  const std::size_t unused = std::numeric_limits<std::size_t>::max();
-  std::vector<std::size_t> new_index(m.number_of_vertices() + m.number_of_removed_vertices(), unused);
-  std::vector<K::Point_3> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  for(std::size_t f : order) {
-    std::vector<std::size_t> polygon;
-    for(std::size_t c : faces_by_corner[f]) {
-      if(new_index[c] == unused) {
-        new_index[c] = points.size();
-        points.push_back(m.point(Mesh::Vertex_index(std::uint32_t(c))));
-      }
-      polygon.push_back(new_index[c]);
-    }
-    polygons.push_back(std::move(polygon));
-  }
-  Mesh copy;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, copy);
-  return copy;
 }
 
 /// The time of a load from memory the caches do not hold, in ns: a pointer chase

@@ -24,6 +24,7 @@
 
 #include <CGAL/Range_space_remeshing/Color_range_maps.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
+#include <CGAL/Range_space_remeshing/copy_in_spatial_order.h>
 #include <CGAL/Range_space_remeshing/primal_remesh.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 
@@ -445,19 +446,19 @@ void table_parallel(const std::vector<Model>& models, const std::vector<double>&
 #endif
 
 /// The same jobs on a copy of each input stored in spatial order
-/// (`spatially_ordered_copy()`): the contouring at n = 3 and the whole pipeline at n = 6,
+/// (`copy_in_spatial_order()`): the contouring at n = 3 and the whole pipeline at n = 6,
 /// at the cell sizes of the first table, the two orders interleaved run by run.
 void table_input_order(const std::vector<Model>& models, const std::vector<double>& identity_h,
                        const std::vector<Pipeline_result>& six, int runs)
 {
   std::cout << "\n## Input order\n\n"
                "The same inputs stored in spatial order: faces along a Hilbert curve through their centroids, "
-               "vertices in the order those faces first use them (`spatially_ordered_copy()` in "
-               "`benchmark_support.h`; the same surface and points, made once, its time in the second column). "
+               "vertices in the order those faces first use them (`copy_in_spatial_order()`; the same surface and "
+               "points, made once, its time in the second column). "
                "Primal contouring at n = 3 and whole pipeline at n = 6 at the cell sizes of the first table; "
                "median of "
             << runs
-            << " runs of each order, interleaved. The library leaves its input's order as it is: the tracing "
+            << " runs of each order, interleaved. The remeshers leave their input's order as it is: the tracing "
                "walks from triangle to neighbouring triangle, and reads their records where the input's numbering "
                "puts them.\n\n"
                "| model | reordering ms (once) | contouring n = 3, file order ms | spatial order ms | speed-up | "
@@ -466,7 +467,8 @@ void table_input_order(const std::vector<Model>& models, const std::vector<doubl
   for(std::size_t i = 0; i < models.size(); ++i) {
     const Mesh& file_order = models[i].mesh;
     const auto start = Clock::now();
-    Mesh spatial_order = spatially_ordered_copy(file_order);
+    Mesh spatial_order;
+    RSR::copy_in_spatial_order(file_order, spatial_order);
     const double reordering_ms = ms_since(start);
     Mesh inputs[2] = {file_order, std::move(spatial_order)};
     std::vector<double> contour[2], pipeline[2];
@@ -596,7 +598,9 @@ void table_deforming(const Model& model)
   const CGAL::Bbox_3 box = PMP::bbox(model.mesh);
   const double height = box.zmax() - box.zmin();
   const int frames = 60;
-  const Mesh inputs[2] = {model.mesh, spatially_ordered_copy(model.mesh)};
+  Mesh spatial_order;
+  RSR::copy_in_spatial_order(model.mesh, spatial_order);
+  const Mesh inputs[2] = {model.mesh, std::move(spatial_order)};
   for(double cell : {0.02, 0.01})
     for(int order = 0; order < 2; ++order) {
       const Mesh& input = inputs[order];

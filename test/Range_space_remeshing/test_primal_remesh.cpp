@@ -11,10 +11,14 @@
 #include <CGAL/boost/graph/graph_traits_Polyhedron_3.h>
 #include <CGAL/boost/graph/properties_Polyhedron_3.h>
 
+#include <CGAL/Range_space_remeshing/copy_in_spatial_order.h>
 #include <CGAL/Range_space_remeshing/internal/Lazily_zeroed_array.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <limits>
+#include <numeric>
+#include <random>
 
 using namespace test;
 namespace params = CGAL::parameters;
@@ -409,6 +413,93 @@ void test_parallel_scan()
 }
 #endif
 
+/// Mean distance in the face numbering between faces that share an edge: about a third
+/// of the faces for a random order, small for an order that follows the surface.
+double mean_index_gap_across_edges(const Mesh& m)
+{
+  double sum = 0;
+  std::size_t pairs = 0;
+  for(auto e : edges(m)) {
+    const auto h = halfedge(e, m);
+    if(is_border_edge(h, m))
+      continue;
+    sum += std::abs(double(std::size_t(face(h, m))) - double(std::size_t(face(opposite(h, m), m))));
+    ++pairs;
+  }
+  return sum / double(pairs);
+}
+
+/// The same surface as `m`, its vertices and faces numbered at random.
+Mesh shuffled_copy(const Mesh& m, unsigned seed)
+{
+  std::mt19937 random(seed);
+  std::vector<std::size_t> vertex_order(num_vertices(m));
+  std::iota(vertex_order.begin(), vertex_order.end(), std::size_t(0));
+  std::shuffle(vertex_order.begin(), vertex_order.end(), random);
+  Mesh shuffled;
+  std::vector<Mesh::Vertex_index> copy_of(num_vertices(m));
+  for(std::size_t i : vertex_order)
+    copy_of[i] = shuffled.add_vertex(m.point(Mesh::Vertex_index(std::uint32_t(i))));
+  std::vector<Mesh::Face_index> face_order(faces(m).begin(), faces(m).end());
+  std::shuffle(face_order.begin(), face_order.end(), random);
+  for(auto f : face_order) {
+    std::vector<Mesh::Vertex_index> corners;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, m), m))
+      corners.push_back(copy_of[std::size_t(v)]);
+    CHECK(CGAL::Euler::add_face(corners, shuffled) != Mesh::null_face());
+  }
+  return shuffled;
+}
+
+void test_copy_in_spatial_order()
+{
+  const Mesh shuffled = shuffled_copy(make_torus(1.0, 0.4, 80, 40), 7);
+  Mesh ordered;
+  std::vector<Mesh::Vertex_index> vertex_copy(num_vertices(shuffled));
+  std::vector<Mesh::Face_index> face_copy(num_faces(shuffled));
+  RSR::copy_in_spatial_order(shuffled, ordered,
+                             params::vertex_to_vertex_map(CGAL::make_property_map(vertex_copy))
+                                 .face_to_face_map(CGAL::make_property_map(face_copy)));
+  CHECK(CGAL::is_valid_polygon_mesh(ordered));
+  CHECK_EQ(num_vertices(ordered), num_vertices(shuffled));
+  CHECK_EQ(num_faces(ordered), num_faces(shuffled));
+  // the same points, and every face with the same corners in the same cyclic order
+  for(auto v : vertices(shuffled))
+    CHECK(ordered.point(vertex_copy[std::size_t(v)]) == shuffled.point(v));
+  std::size_t faces_differing = 0;
+  for(auto f : faces(shuffled)) {
+    std::vector<Mesh::Vertex_index> expected, found;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, shuffled), shuffled))
+      expected.push_back(vertex_copy[std::size_t(v)]);
+    for(auto v : CGAL::vertices_around_face(halfedge(face_copy[std::size_t(f)], ordered), ordered))
+      found.push_back(v);
+    const auto first = std::find(found.begin(), found.end(), expected.front());
+    if(first == found.end()) {
+      ++faces_differing;
+      continue;
+    }
+    std::rotate(found.begin(), first, found.end());
+    faces_differing += found != expected;
+  }
+  CHECK_EQ(faces_differing, std::size_t(0));
+  // neighbours near each other in memory: the point of the copy
+  const double gap_before = mean_index_gap_across_edges(shuffled), gap_after = mean_index_gap_across_edges(ordered);
+  std::cout << "copy_in_spatial_order: mean index gap across edges " << gap_before << " -> " << gap_after
+            << std::endl;
+  CHECK(gap_after < 0.1 * gap_before);
+  // the remesh does not depend on the order
+  Mesh a, b;
+  remesh_and_check(shuffled, a, params::grid_spacing(0.1));
+  remesh_and_check(ordered, b, params::grid_spacing(0.1));
+  CHECK_EQ(num_vertices(a), num_vertices(b));
+  CHECK_EQ(num_faces(a), num_faces(b));
+  // into another graph type
+  CGAL::Polyhedron_3<K> polyhedron;
+  RSR::copy_in_spatial_order(shuffled, polyhedron);
+  CHECK(CGAL::is_valid_polygon_mesh(polyhedron));
+  CHECK_EQ(num_faces(polyhedron), num_faces(shuffled));
+}
+
 int main()
 {
   test_sampled_geometry();
@@ -421,6 +512,7 @@ int main()
   test_determinism_and_seeding();
   test_lazily_zeroed_arrays();
   test_errors();
+  test_copy_in_spatial_order();
 #if defined(CGAL_LINKED_WITH_TBB)
   test_parallel_scan();
 #else

@@ -1,0 +1,158 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_COPY_IN_SPATIAL_ORDER_H
+#define CGAL_RANGE_SPACE_REMESHING_COPY_IN_SPATIAL_ORDER_H
+
+#include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
+#include <CGAL/Range_space_remeshing/internal/Quadric.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/hilbert_sort.h>
+#include <CGAL/property_map.h>
+
+#include <cstddef>
+#include <limits>
+#include <numeric>
+#include <type_traits>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
+copies a polygon mesh so that its elements are stored in spatial order: the faces
+along a Hilbert curve through their centroids, the vertices in the order in which
+those faces first use them. The copy is the same surface, with the same connectivity
+and points.
+
+Why: the remeshers walk from face to neighbouring face, and read each face and vertex
+where the input's numbering puts it. Files often store their faces in the order a
+modeller or a refinement made them, scattered over memory for a walk on the surface;
+on CGAL's refined_elephant and bunny00, the primal contouring of the copy ran 1.2 to
+1.7 times faster, and a deforming mesh remeshed frame after frame got 1.1 to 1.9 times
+the frames per second (see the manual's Performance section). The copy costs about as
+much as several remeshes, so it pays for a mesh remeshed many times, or stored once in
+this order.
+
+Elements are appended to `out` (as `CGAL::copy_face_graph()` does); properties other
+than the points are not copied: the maps of `np_in` tell where each element went, to
+copy them.
+
+\tparam PolygonMesh a model of `FaceListGraph`.
+\tparam PolygonMeshOut a model of `MutableFaceGraph` and `VertexListGraph`.
+\param tm the mesh to copy: a valid polygon mesh.
+\param out receives the copy.
+\param np_in `vertex_point_map`; `vertex_to_vertex_map` (writable, vertex of `tm` ->
+  vertex of `out`) and `face_to_face_map` (writable, face of `tm` -> face of `out`) are
+  written when given.
+\param np_out `vertex_point_map` of `out`.
+\throws Remeshing_error if a face of `tm` cannot be added to `out` (`tm` is not a
+  valid polygon mesh); `out` then holds a part of the copy.
+*/
+template <class PolygonMesh, class PolygonMeshOut, class NamedParametersIn = CGAL::parameters::Default_named_parameters,
+          class NamedParametersOut = CGAL::parameters::Default_named_parameters>
+void copy_in_spatial_order(const PolygonMesh& tm, PolygonMeshOut& out,
+                           const NamedParametersIn& np_in = CGAL::parameters::default_values(),
+                           const NamedParametersOut& np_out = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  using out_vertex = typename boost::graph_traits<PolygonMeshOut>::vertex_descriptor;
+  using out_face = typename boost::graph_traits<PolygonMeshOut>::face_descriptor;
+  using Out_point = typename boost::property_traits<
+      typename GetVertexPointMap<PolygonMeshOut, NamedParametersOut>::type>::value_type;
+  using Sorting_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  using In_point = typename boost::property_traits<
+      typename GetVertexPointMap<PolygonMesh, NamedParametersIn>::const_type>::value_type;
+
+  const auto vpm = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto out_vpm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
+                                        get_property_map(CGAL::vertex_point, out));
+  const auto vertex_index = CGAL::get_initialized_vertex_index_map(tm, np_in);
+  // a constant map ignores what is put in it: nothing to tell when no map is given
+  auto vertex_to_vertex = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_to_vertex_map),
+                                           CGAL::Constant_property_map<vertex_descriptor, out_vertex>());
+  auto face_to_face = choose_parameter(get_parameter(np_in, CGAL::internal_np::face_to_face_map),
+                                       CGAL::Constant_property_map<face_descriptor, out_face>());
+
+  // the point itself where both meshes have the same point type, else its coordinates
+  // in double precision
+  auto copied_point = [&](vertex_descriptor v) -> Out_point {
+    if constexpr(std::is_same<In_point, Out_point>::value)
+      return get(vpm, v);
+    else {
+      const internal::Vec3 p = internal::to_vec3(get(vpm, v));
+      return Out_point(p[0], p[1], p[2]);
+    }
+  };
+  // The centroids in double precision: they only order the faces.
+  std::vector<face_descriptor> input_faces;
+  std::vector<Sorting_kernel::Point_3> centroids;
+  for(face_descriptor f : faces(tm)) {
+    internal::Vec3 sum = {{0, 0, 0}};
+    double corners = 0;
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+      const internal::Vec3 p = internal::to_vec3(get(vpm, v));
+      for(int d = 0; d < 3; ++d)
+        sum[d] += p[d];
+      ++corners;
+    }
+    input_faces.push_back(f);
+    centroids.emplace_back(sum[0] / corners, sum[1] / corners, sum[2] / corners);
+  }
+  std::vector<std::size_t> order(input_faces.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  const auto centroid_of = CGAL::make_property_map(centroids);
+  CGAL::hilbert_sort(order.begin(), order.end(),
+                     CGAL::Spatial_sort_traits_adapter_3<Sorting_kernel, decltype(centroid_of)>(centroid_of));
+
+  const out_vertex not_copied = boost::graph_traits<PolygonMeshOut>::null_vertex();
+  std::vector<out_vertex> copy_of(internal::index_bound(vertices(tm), vertex_index), not_copied);
+  std::vector<out_vertex> corners;
+  for(std::size_t k : order) {
+    const face_descriptor f = input_faces[k];
+    corners.clear();
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+      out_vertex& w = copy_of[get(vertex_index, v)];
+      if(w == not_copied) {
+        w = add_vertex(out);
+        put(out_vpm, w, copied_point(v));
+        put(vertex_to_vertex, v, w);
+      }
+      corners.push_back(w);
+    }
+    const out_face g = CGAL::Euler::add_face(corners, out);
+    if(g == boost::graph_traits<PolygonMeshOut>::null_face())
+      throw Remeshing_error("copy_in_spatial_order: a face of the input cannot be added to the copy: the input "
+                            "is not a valid polygon mesh");
+    put(face_to_face, f, g);
+  }
+  // vertices on no face come last, in the input's order
+  for(vertex_descriptor v : vertices(tm)) {
+    out_vertex& w = copy_of[get(vertex_index, v)];
+    if(w != not_copied)
+      continue;
+    w = add_vertex(out);
+    put(out_vpm, w, copied_point(v));
+    put(vertex_to_vertex, v, w);
+  }
+}
+
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_COPY_IN_SPATIAL_ORDER_H
