@@ -498,6 +498,11 @@ void test_copy_in_spatial_order()
   RSR::copy_in_spatial_order(shuffled, polyhedron);
   CHECK(CGAL::is_valid_polygon_mesh(polyhedron));
   CHECK_EQ(num_faces(polyhedron), num_faces(shuffled));
+  // a NaN point: refused before anything is copied
+  Mesh with_nan = shuffled, untouched;
+  with_nan.point(*vertices(with_nan).begin()) = Point(std::numeric_limits<double>::quiet_NaN(), 0, 0);
+  CHECK(throws_remeshing_error([&] { RSR::copy_in_spatial_order(with_nan, untouched); }));
+  CHECK_EQ(num_vertices(untouched), std::size_t(0));
 }
 
 int main()

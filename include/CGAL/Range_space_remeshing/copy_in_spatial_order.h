@@ -19,8 +19,9 @@
 #include <CGAL/hilbert_sort.h>
 #include <CGAL/property_map.h>
 
+#include <cmath>
 #include <cstddef>
-#include <limits>
+#include <string>
 #include <numeric>
 #include <type_traits>
 #include <vector>
@@ -57,8 +58,9 @@ copy them.
   vertex of `out`) and `face_to_face_map` (writable, face of `tm` -> face of `out`) are
   written when given.
 \param np_out `vertex_point_map` of `out`.
-\throws Remeshing_error if a face of `tm` cannot be added to `out` (`tm` is not a
-  valid polygon mesh); `out` then holds a part of the copy.
+\throws Remeshing_error if a point of a face has a NaN or infinite coordinate (`out`
+  is then unchanged), or if a face of `tm` cannot be added to `out` (`tm` is not a
+  valid polygon mesh; `out` then holds a part of the copy).
 */
 template <class PolygonMesh, class PolygonMeshOut, class NamedParametersIn = CGAL::parameters::Default_named_parameters,
           class NamedParametersOut = CGAL::parameters::Default_named_parameters>
@@ -111,6 +113,10 @@ void copy_in_spatial_order(const PolygonMesh& tm, PolygonMeshOut& out,
         sum[d] += p[d];
       ++corners;
     }
+    // a NaN would break the sort's ordering (undefined behaviour), an infinity its subdivision
+    if(!(std::isfinite(sum[0]) && std::isfinite(sum[1]) && std::isfinite(sum[2])))
+      throw Remeshing_error("copy_in_spatial_order: a corner of input face " + std::to_string(input_faces.size()) +
+                            " (in the order of faces(tm)) has a NaN or infinite coordinate");
     input_faces.push_back(f);
     centroids.emplace_back(sum[0] / corners, sum[1] / corners, sum[2] / corners);
   }
