@@ -40,9 +40,10 @@ and points.
 Why: the remeshers walk from face to neighbouring face, and read each face and vertex
 where the input's numbering puts it. Files often store their faces in the order a
 modeller or a refinement made them, scattered over memory for a walk on the surface;
-on CGAL's refined_elephant and bunny00, the primal contouring of the copy ran 1.2 to
-1.7 times faster, and a deforming mesh remeshed frame after frame got 1.1 to 1.9 times
-the frames per second (see the manual's Performance section). The copy costs about as
+on four of CGAL's sample meshes, the primal contouring of the copy ran 1.2 to 2.3
+times faster (man's file, in such an order already, gained nothing), and a deforming
+mesh remeshed frame after frame got 1.1 to 2.7 times the frames per second (see the
+manual's Performance section). The copy costs about as
 much as several remeshes, so it pays for a mesh remeshed many times, or stored once in
 this order.
 
