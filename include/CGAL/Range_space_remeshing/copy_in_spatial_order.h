@@ -21,8 +21,8 @@
 
 #include <cmath>
 #include <cstddef>
-#include <string>
 #include <numeric>
+#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -43,9 +43,8 @@ modeller or a refinement made them, scattered over memory for a walk on the surf
 on four of CGAL's sample meshes, the primal contouring of the copy ran 1.2 to 2.3
 times faster (man's file, in such an order already, gained nothing), and a deforming
 mesh remeshed frame after frame got 1.1 to 2.7 times the frames per second (see the
-manual's Performance section). The copy costs about as
-much as several remeshes, so it pays for a mesh remeshed many times, or stored once in
-this order.
+manual's Performance section). The copy costs about as much as several remeshes, so
+it pays for a mesh remeshed many times, or stored once in this order.
 
 Elements are appended to `out` (as `CGAL::copy_face_graph()` does); properties other
 than the points are not copied: the maps of `np_in` tell where each element went, to
@@ -129,19 +128,22 @@ void copy_in_spatial_order(const PolygonMesh& tm, PolygonMeshOut& out,
 
   const out_vertex not_copied = boost::graph_traits<PolygonMeshOut>::null_vertex();
   std::vector<out_vertex> copy_of(internal::index_bound(vertices(tm), vertex_index), not_copied);
+  // the copy of v, made on its first use
+  auto copy_vertex = [&](vertex_descriptor v) {
+    out_vertex& w = copy_of[get(vertex_index, v)];
+    if(w == not_copied) {
+      w = add_vertex(out);
+      put(out_vpm, w, copied_point(v));
+      put(vertex_to_vertex, v, w);
+    }
+    return w;
+  };
   std::vector<out_vertex> corners;
   for(std::size_t k : order) {
     const face_descriptor f = input_faces[k];
     corners.clear();
-    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
-      out_vertex& w = copy_of[get(vertex_index, v)];
-      if(w == not_copied) {
-        w = add_vertex(out);
-        put(out_vpm, w, copied_point(v));
-        put(vertex_to_vertex, v, w);
-      }
-      corners.push_back(w);
-    }
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      corners.push_back(copy_vertex(v));
     const out_face g = CGAL::Euler::add_face(corners, out);
     if(g == boost::graph_traits<PolygonMeshOut>::null_face())
       throw Remeshing_error("copy_in_spatial_order: a face of the input cannot be added to the copy: the input "
@@ -149,14 +151,8 @@ void copy_in_spatial_order(const PolygonMesh& tm, PolygonMeshOut& out,
     put(face_to_face, f, g);
   }
   // vertices on no face come last, in the input's order
-  for(vertex_descriptor v : vertices(tm)) {
-    out_vertex& w = copy_of[get(vertex_index, v)];
-    if(w != not_copied)
-      continue;
-    w = add_vertex(out);
-    put(out_vpm, w, copied_point(v));
-    put(vertex_to_vertex, v, w);
-  }
+  for(vertex_descriptor v : vertices(tm))
+    copy_vertex(v);
 }
 
 } // namespace Range_space_remeshing
