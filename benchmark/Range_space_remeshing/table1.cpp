@@ -353,9 +353,9 @@ void table_peers(const std::vector<Model>& models, const std::vector<Pipeline_re
             << " runs after a warm-up, one thread. Speed-up: the peer's median time over our whole pipeline's "
                "(best: the fastest run, a steadier figure on this shared machine). Regular "
                "vertices: valence 4 in quad meshes, 6 in triangle meshes. Distances of polygon meshes: of "
-               "their triangulation by PMP, where a face it cannot triangulate (a non-planar polygon whose "
-               "projection crosses itself: a few primal polygons, and faces the dual joins) is a fan "
-               "from one corner.\n\n"
+               "their triangulation by PMP (quads split along a diagonal, larger faces filled as holes in 3-D), "
+               "where a face it cannot triangulate (a non-planar polygon whose projection crosses itself: a few "
+               "primal polygons, and faces the dual joins) is a fan from one corner.\n\n"
                "| model | method | output vertices | ms | best ms | speed-up | RMS | Hausdorff | regular vertices | min angle |\n"
                "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
   for(std::size_t i = 0; i < models.size(); ++i) {
@@ -471,19 +471,22 @@ void table_input_order(const std::vector<Model>& models, const std::vector<doubl
     RSR::copy_in_spatial_order(file_order, spatial_order);
     const double reordering_ms = ms_since(start);
     Mesh inputs[2] = {file_order, std::move(spatial_order)};
+    // the normals as in the first table: computed in each timed run, given to the remesher
+    using Normals = Mesh::Property_map<Mesh::Vertex_index, K::Vector_3>;
+    const Normals normals[2] = {inputs[0].add_property_map<Mesh::Vertex_index, K::Vector_3>("v:normal").first,
+                                inputs[1].add_property_map<Mesh::Vertex_index, K::Vector_3>("v:normal").first};
     std::vector<double> contour[2], pipeline[2];
     std::size_t primal_vertices[2] = {0, 0};
     for(int r = 0; r <= runs; ++r) // run 0: the warm-up
       for(int k = 0; k < 2; ++k) {
-        Mesh& input = inputs[k];
+        const Mesh& input = inputs[k];
         Mesh primal, quads;
         const auto p = RSR::primal_remesh(input, primal, CGAL::parameters::grid_spacing(identity_h[i]));
-        // the normals as in the first table: computed in the timed run, given to the remesher
-        auto normals = input.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:normal").first;
-        const RSR::Position_normal_range_map f6(input.points(), normals, 1.0, normal_weight * models[i].diagonal);
+        const RSR::Position_normal_range_map f6(input.points(), normals[k], 1.0, normal_weight * models[i].diagonal);
         const auto pipeline_start = Clock::now();
-        RSR::compute_vertex_normals(input, normals);
-        RSR::remesh(input, quads, RSR::parameters::range_map(f6).grid_spacing(six[i].h).vertex_normal_map(normals));
+        RSR::compute_vertex_normals(input, normals[k]);
+        RSR::remesh(input, quads,
+                    RSR::parameters::range_map(f6).grid_spacing(six[i].h).vertex_normal_map(normals[k]));
         const double pipeline_ms = ms_since(pipeline_start);
         primal_vertices[k] = num_vertices(primal);
         if(r == 0)
