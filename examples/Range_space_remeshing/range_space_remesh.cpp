@@ -13,6 +13,7 @@
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 #include <CGAL/Range_space_remeshing/View_range_map.h>
 #include <CGAL/Range_space_remeshing/insert_crease_triangles.h>
+#include <CGAL/Range_space_remeshing/prepare_input.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -21,13 +22,16 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/assertions_behaviour.h>
 #include <CGAL/boost/graph/Euler_operations.h>
-#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
-#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/version.h>
 
-#include "polygon_soup_input.h"
+#include "mesh_file_reader.h"
+#include "mesh_file_writer.h"
+
+#include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdio>
@@ -36,18 +40,22 @@
 #include <iostream>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
+#include <system_error>
+#include <unordered_map>
 #include <sstream>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include <unistd.h>
+#include <filesystem>
 
 namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Mesh = CGAL::Surface_mesh<K::Point_3>;
+using Color_map = Mesh::Property_map<Mesh::Vertex_index, CGAL::IO::Color>;
 namespace RSR = CGAL::Range_space_remeshing;
 namespace PMP = CGAL::Polygon_mesh_processing;
 
@@ -58,6 +66,9 @@ const char* usage =
     "image under a map f with a uniform grid of cell size H in the range space, and\n"
     "writes OUTPUT.\n"
     "Formats (by extension): .off .obj .ply .stl. Polygonal input is triangulated.\n"
+    "Input that is not an oriented 2-manifold (STL soups, non-manifold vertices or\n"
+    "edges, inconsistent orientation, duplicate or degenerate faces) is repaired\n"
+    "first with CGAL's polygon soup repair; one line on stderr says what changed.\n"
     "\n"
     "options:\n"
     "  --map NAME            the map f:\n"
@@ -125,6 +136,8 @@ const char* usage =
     "  --topology-report FILE  write the input faces where the topology check found\n"
     "                          defects to FILE, a mesh (.off .obj .ply .stl)\n"
     "  --stats               print one JSON object with counts and times on stdout\n"
+    "  --strict              refuse an input that needs repairs instead of repairing it\n"
+    "  --ascii               write PLY and STL as text (default: binary)\n"
     "  --help                print this help and exit\n"
     "\n"
     "exit status: 0 on success, 2 on bad arguments or unusable input.\n";
@@ -161,6 +174,7 @@ struct Options
   double depth_weight = 0; // view map: pixels per unit of depth, from the camera file
   int relax = 3;
   bool absolute = false, seeded = false, stats = false, collapse = true;
+  bool strict = false, binary = true;
   bool check_topology = true, preserve_topology = false;
   std::string topology_report; // file of the flagged input faces
   std::vector<RSR::Topology_defect<Mesh::Face_index>>* defects = nullptr; // filled by the check
@@ -254,6 +268,10 @@ Options parse_arguments(int argc, char** argv)
       options.topology_report = value();
     } else if(arg == "--stats") {
       options.stats = true;
+    } else if(arg == "--strict") {
+      options.strict = true;
+    } else if(arg == "--ascii") {
+      options.binary = false;
     } else if(!arg.empty() && arg[0] == '-' && arg != "-") {
       fail("unknown option '" + arg + "' (see --help)");
     } else {
@@ -269,21 +287,9 @@ Options parse_arguments(int argc, char** argv)
   return options;
 }
 
-std::string extension_of(const std::string& path)
-{
-  const auto dot = path.find_last_of('.');
-  const auto slash = path.find_last_of('/');
-  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return "";
-  std::string ext = path.substr(dot + 1);
-  for(char& c : ext)
-    c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
 bool is_supported_format(const std::string& path)
 {
-  const std::string ext = extension_of(path);
+  const std::string ext = rsr_io::extension_of(path);
   return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl";
 }
 
@@ -343,88 +349,111 @@ RSR::Camera read_camera(const std::string& path, double& depth_weight)
   }
 }
 
-/// The vertex colours of a PLY or COFF file, in file order; empty if it has none
-/// (CGAL's soup readers cannot return them here, its mesh readers can).
-std::vector<CGAL::IO::Color> read_vertex_colors(const std::string& path, std::size_t number_of_points)
+/// The input mesh and what it took to get it.
+struct Input
 {
-  const std::string ext = extension_of(path);
-  if(ext != "ply" && ext != "off")
-    return {};
   Mesh mesh;
-  auto colors = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
-  bool ok = false;
-  try {
-    Silenced_cerr silence;
-    std::ifstream in(path, std::ios::binary);
-    if(ext == "ply")
-      ok = CGAL::IO::read_PLY(in, mesh); // fills "v:color" where the file has colours
-    else
-      ok = CGAL::IO::read_OFF(in, mesh, CGAL::parameters::vertex_color_map(colors));
-  } catch(const std::exception&) {
-    ok = false;
-  }
-  if(!ok || num_vertices(mesh) != number_of_points)
-    return {};
-  const auto read = mesh.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
-  std::vector<CGAL::IO::Color> result;
-  bool any = false;
-  for(auto v : vertices(mesh)) {
-    result.push_back(read.first[v]);
-    any = any || !(read.first[v] == CGAL::IO::Color());
-  }
-  return any ? result : std::vector<CGAL::IO::Color>();
+  RSR::Input_repair_statistics repairs;
+  double read_ms = 0, repair_ms = 0;
+};
+
+/// The mesh's vertex colours ("v:color"), if it has them.
+std::optional<Color_map> find_vertex_colors(const Mesh& mesh)
+{
+#if CGAL_VERSION_NR >= 1060000000 // Surface_mesh::property_map() returns an optional since CGAL 6
+  return mesh.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
+#else
+  const auto [map, found] = mesh.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
+  return found ? std::optional<Color_map>(map) : std::nullopt;
+#endif
 }
 
-/// Reads INPUT as a polygon soup and checks it is a usable 2-manifold triangle mesh
-/// (polygons are triangulated), with its vertex colours if the file has them.
-Mesh read_input(const std::string& path, bool& triangulated)
+/// Gives the vertices of `mesh` the colours of the soup's points at their positions:
+/// the repair only merges points that coincide and copies points, so each vertex
+/// sits where some point of the file is (the first point there gives the colour).
+void add_colors_by_position(const rsr_io::Polygon_soup& soup, Mesh& mesh)
 {
-  if(!is_supported_format(path))
-    fail("cannot read '" + path + "': unsupported format (use .off .obj .ply .stl)");
-  std::vector<K::Point_3> points;
-  std::vector<std::vector<std::size_t>> polygons;
-  bool ok = false;
-  try {
-    if(extension_of(path) == "ply" || extension_of(path) == "off") {
-      std::ifstream header(path, std::ios::binary | std::ios::ate);
-      if(header) {
-        const std::uintmax_t size = std::uintmax_t(header.tellg());
-        header.seekg(0);
-        if(extension_of(path) == "ply")
-          rsr_input::check_ply_header(header, "'" + path + "'", size);
-        else
-          rsr_input::check_off_counts(header, "'" + path + "'", size);
-      }
+  using Position = std::array<double, 3>;
+  struct Hash
+  {
+    std::size_t operator()(const Position& p) const
+    {
+      std::size_t h = 0;
+      for(double x : p)
+        h = h * 1000003u ^ std::hash<double>()(x);
+      return h;
     }
-    Silenced_cerr silence;
-    ok = CGAL::IO::read_polygon_soup(path, points, polygons);
-  } catch(const rsr_input::Input_error& e) {
-    fail(e.what());
-  } catch(const std::exception&) {
-    ok = false;
+  };
+  std::unordered_map<Position, std::size_t, Hash> point_at;
+  point_at.reserve(soup.points.size());
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+    point_at.emplace(soup.points[i], i);
+  auto colors = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+  for(auto v : vertices(mesh)) {
+    const auto& p = mesh.point(v);
+    const auto found = point_at.find({{p.x(), p.y(), p.z()}});
+    if(found != point_at.end()) {
+      const auto& c = soup.colors[found->second];
+      colors[v] = CGAL::IO::Color(c[0], c[1], c[2]);
+    }
   }
-  if(!ok)
-    fail("cannot read '" + path + "': missing, unreadable or not a valid mesh file");
-  Mesh mesh;
+}
+
+/// Reads INPUT into a triangle mesh (see rsr_io::read_mesh_file): repaired into an
+/// oriented 2-manifold unless --strict, polygons triangulated, vertex colours kept.
+Input read_input(const std::string& path, bool strict)
+{
+  Input input;
+  const auto start = std::chrono::steady_clock::now();
+  rsr_io::Polygon_soup soup;
   try {
-    triangulated = rsr_input::polygon_soup_to_triangle_mesh(points, polygons, "'" + path + "'", mesh);
-  } catch(const rsr_input::Input_error& e) {
+    soup = rsr_io::read_mesh_file(path);
+  } catch(const rsr_io::Read_error& e) {
     fail(e.what());
   }
-  const std::vector<CGAL::IO::Color> colors = read_vertex_colors(path, points.size());
-  if(!colors.empty()) {
-    // the mesh's vertices are the points used by a face, in order
-    std::vector<bool> used(points.size(), false);
-    for(const auto& polygon : polygons)
-      for(std::size_t v : polygon)
-        used[v] = true;
-    auto vertex_colors = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
-    auto v = vertices(mesh).begin();
-    for(std::size_t i = 0; i < points.size(); ++i)
-      if(used[i])
-        vertex_colors[*v++] = colors[i];
+  const auto read = std::chrono::steady_clock::now();
+  std::vector<K::Point_3> points;
+  points.reserve(soup.points.size());
+  for(const auto& p : soup.points)
+    points.emplace_back(p[0], p[1], p[2]);
+  try {
+    input.repairs = RSR::prepare_input(points, soup.polygons, input.mesh,
+                                       strict ? RSR::Input_repair::REFUSE : RSR::Input_repair::REPAIR);
+  } catch(const RSR::Remeshing_error& e) {
+    fail("'" + path + "': " + e.what() + (strict ? " (drop --strict to repair it)" : ""));
   }
-  return mesh;
+  if(!soup.colors.empty())
+    add_colors_by_position(soup, input.mesh);
+  const auto repaired = std::chrono::steady_clock::now();
+  input.read_ms = std::chrono::duration<double, std::milli>(read - start).count();
+  input.repair_ms = std::chrono::duration<double, std::milli>(repaired - read).count();
+  return input;
+}
+
+/// One line on stderr when the input needed repairs.
+void report_repairs(const std::string& path, const RSR::Input_repair_statistics& r)
+{
+  if(!r.repaired() && r.removed_isolated_points == 0)
+    return;
+  std::ostringstream line;
+  line << "range_space_remesh: repaired '" << path << "':";
+  const std::pair<std::size_t, const char*> counts[] = {
+      {r.merged_points, "merged points"},
+      {r.removed_isolated_points, "unused points removed"},
+      {r.removed_repeated_corners, "repeated corners removed"},
+      {r.removed_degenerate_polygons, "degenerate faces removed"},
+      {r.removed_duplicate_polygons, "duplicate faces removed"},
+      {r.reversed_polygons, "faces flipped"},
+      {r.reversed_to_face_outward, "triangles flipped to face outward"},
+      {r.non_manifold_edges, "non-manifold edges cut"},
+      {r.split_non_manifold_points, "points copied to split non-manifold vertices"}};
+  const char* separator = " ";
+  for(const auto& [count, what] : counts)
+    if(count > 0) {
+      line << separator << count << " " << what;
+      separator = ", ";
+    }
+  std::cerr << line.str() << (r.repaired() ? " (--strict refuses such input)" : "") << std::endl;
 }
 
 /// With --sharp-angle, the input with zero-area triangles along its creases, so that
@@ -435,46 +464,16 @@ Mesh with_creases_opened(Mesh input, const Options& options)
     return input;
   Mesh creased;
   RSR::insert_crease_triangles(input, creased, options.sharp_angle);
-  const auto colors = input.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
-  if(colors.second) { // copies sit at their original's position: match them by position
+  const auto colors = find_vertex_colors(input);
+  if(colors) { // copies sit at their original's position: match them by position
     std::map<std::array<double, 3>, CGAL::IO::Color> by_position;
     for(auto v : vertices(input))
-      by_position[{{input.point(v).x(), input.point(v).y(), input.point(v).z()}}] = colors.first[v];
+      by_position[{{input.point(v).x(), input.point(v).y(), input.point(v).z()}}] = (*colors)[v];
     auto copied = creased.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
     for(auto v : vertices(creased))
       copied[v] = by_position[{{creased.point(v).x(), creased.point(v).y(), creased.point(v).z()}}];
   }
   return creased;
-}
-
-/// Writes the mesh next to `path` under a temporary name, then renames it, so that
-/// `path` is never seen half-written.
-void write_atomically(const Mesh& mesh, const std::string& path)
-{
-  if(!is_supported_format(path))
-    fail("cannot write '" + path + "': unsupported format (use .off .obj .ply .stl)");
-  const auto slash = path.find_last_of('/');
-  const std::string dir = slash == std::string::npos ? "" : path.substr(0, slash + 1);
-  const std::string name = slash == std::string::npos ? path : path.substr(slash + 1);
-  const std::string temporary =
-      dir + "." + name + ".tmp" + std::to_string(::getpid()) + "." + extension_of(path);
-  bool ok = false;
-  try {
-    Silenced_cerr silence;
-    const auto colors = mesh.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
-    const std::string ext = extension_of(path);
-    if(colors.second && (ext == "ply" || ext == "off")) // the formats that store vertex colours
-      ok = CGAL::IO::write_polygon_mesh(
-          temporary, mesh, CGAL::parameters::stream_precision(17).vertex_color_map(colors.first));
-    else
-      ok = CGAL::IO::write_polygon_mesh(temporary, mesh, CGAL::parameters::stream_precision(17));
-  } catch(const std::exception&) {
-    ok = false;
-  }
-  if(!ok || std::rename(temporary.c_str(), path.c_str()) != 0) {
-    std::remove(temporary.c_str());
-    fail("cannot write '" + path + "'");
-  }
 }
 
 std::size_t components(const Mesh& mesh)
@@ -534,9 +533,8 @@ template <class NamedParameters>
 RSR::Remesh_statistics run_with_colors(const Mesh& input, const NamedParameters& np, const Options& options,
                                        Mesh& output)
 {
-  const auto colors = input.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
-  if(colors.second)
-    return run(input, np.vertex_color_map(colors.first), options, output);
+  if(const auto colors = find_vertex_colors(input))
+    return run(input, np.vertex_color_map(*colors), options, output);
   return run(input, np, options, output);
 }
 
@@ -662,8 +660,8 @@ RSR::Remesh_statistics remesh(const Mesh& input, const Input_normals& normals, d
                                                       np),
                            options, output);
   if(options.map == "position-normal-color" || options.map == "position-normal-color-gradient") {
-    const auto colors = input.property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color");
-    if(!colors.second)
+    const auto found = find_vertex_colors(input);
+    if(!found)
       fail("--map " + options.map + " needs vertex colours: give a PLY or COFF input with colours");
     const double unit = options.length_unit, wn = options.normal_weight * unit;
     const bool gradient = options.map == "position-normal-color-gradient";
@@ -672,11 +670,11 @@ RSR::Remesh_statistics remesh(const Mesh& input, const Input_normals& normals, d
     if(options.map == "position-normal-color")
       return run_with_colors(input,
                              RSR::parameters::range_map(RSR::Position_normal_color_range_map(
-                                                            points, normals, colors.first, 1.0, wn, wc * unit),
+                                                            points, normals, *found, 1.0, wn, wc * unit),
                                                         np),
                              options, output);
     // gradient magnitudes are colour per length: one more length unit
-    const RSR::Color_gradient_magnitude_map<Mesh, decltype(colors.first)> gradients(input, colors.first);
+    const RSR::Color_gradient_magnitude_map<Mesh, Color_map> gradients(input, *found);
     return run_with_colors(input,
                            RSR::parameters::range_map(RSR::Position_normal_color_range_map(
                                                           points, normals, gradients, 1.0, wn, wc * unit * unit),
@@ -730,7 +728,7 @@ RSR::Remesh_statistics remesh_preserving_topology(const Mesh& input, const Input
 {
   RSR::Remesh_statistics stats = remesh(input, normals, h, options, output);
   for(int refinement = 0; options.preserve_topology && options.output_kind != "primal" &&
-                          stats.dual.parallel_edges + stats.dual.joined_parallel_edges > 0 &&
+                          stats.dual.parallel_edges + stats.dual.joined_parallel_edges + stats.dual.dropped_pieces > 0 &&
                           refinement < 10;
       ++refinement)
     stats = remesh(input, normals, stats.primal.cell_size * std::sqrt(0.5), options, output);
@@ -760,20 +758,31 @@ Mesh flagged_faces(const Mesh& input, const std::vector<RSR::Topology_defect<Mes
 }
 
 /// One line on stderr when the output's topology may differ from the input's.
-void warn_about_topology(const RSR::Statistics& s, const std::vector<RSR::Topology_defect<Mesh::Face_index>>& defects)
+void warn_about_topology(const RSR::Remesh_statistics& all, const Options& options,
+                         const std::vector<RSR::Topology_defect<Mesh::Face_index>>& defects)
 {
-  if(!s.topology_checked || s.topology_preserved())
+  const RSR::Statistics& s = all.primal;
+  const bool dual = options.output_kind != "primal";
+  if(!s.topology_checked || (dual ? all.topology_preserved() : s.topology_preserved()))
     return;
   std::cerr << "range_space_remesh: warning: the remesh may not have the input's topology ("
             << s.closed_loops << " closed loops, " << s.non_disk_cells << " non-disk cells, " << s.lost_components
-            << " lost components, " << s.uncrossed_border_cycles << " lost border cycles; Euler characteristic "
+            << " lost components, " << s.uncrossed_border_cycles << " lost border cycles, "
+            << s.dropped_pieces + (dual ? all.dual.dropped_pieces : 0) << " dropped pieces; Euler characteristic "
             << s.input_euler_characteristic << " -> " << s.output_euler_characteristic << ", "
             << defects.size() << " defects); use --preserve-topology or a smaller cell size" << std::endl;
 }
 
-void print_stats(const Options& options, const Mesh& input, const Mesh& output,
-                 const RSR::Remesh_statistics& all, double h, bool triangulated)
+/// Where the run's time went outside the remesher.
+struct Io_times
 {
+  double read_ms = 0, repair_ms = 0, write_ms = 0;
+};
+
+void print_stats(const Options& options, const Mesh& input, const Mesh& output, const RSR::Remesh_statistics& all,
+                 double h, const RSR::Input_repair_statistics& repairs, const Io_times& io)
+{
+  using nlohmann::json;
   const RSR::Statistics& s = all.primal;
   std::map<std::size_t, std::size_t> valences;
   for(auto v : vertices(output))
@@ -781,60 +790,97 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output,
   std::size_t quads = 0;
   for(auto f : faces(output))
     quads += (degree(f, output) == 4);
-  std::ostringstream json;
-  json.precision(6);
-  json << "{\"input\": \"" << options.input << "\", \"output\": \"" << options.output << "\""
-       << ", \"map\": \"" << options.map << "\", \"D\": " << (options.map == "position-normal" ? 6 : options.map.rfind("position-normal-color", 0) == 0 ? 9 : 3)
-       << ", \"normal_weight\": " << (options.map.rfind("position-normal", 0) == 0 ? options.normal_weight : 0.)
-       << ", \"cell_size\": " << h << ", \"seeding\": \"" << (options.seeded ? "seeded" : "complete")
-       << "\", \"output_kind\": \"" << options.output_kind << "\", \"placement\": \""
-       << options.placement << "\", \"collapse\": " << (options.collapse ? "true" : "false")
-       << ", \"relaxation_steps\": " << options.relax
-       << ", \"triangulated\": " << (triangulated ? "true" : "false")
-       << ", \"input_vertices\": " << num_vertices(input) << ", \"input_faces\": " << num_faces(input)
-       << ", \"input_components\": " << components(input)
-       << ", \"output_vertices\": " << num_vertices(output)
-       << ", \"output_edges\": " << num_edges(output) << ", \"output_faces\": " << num_faces(output)
-       << ", \"output_components\": " << components(output)
-       << ", \"mapped_vertices\": " << s.mapped_vertices << ", \"visited_faces\": " << s.visited_faces
-       << ", \"intersection_vertices\": " << s.intersection_vertices
-       << ", \"digons\": " << s.digons << ", \"non_simple_faces\": " << s.non_simple_faces
-       << ", \"dropped_pieces\": " << s.dropped_pieces
-       << ", \"input_border_cycles\": " << border_cycles(input)
-       << ", \"output_border_cycles\": " << border_cycles(output)
-       << ", \"boundary_digons\": " << s.boundary_digons
-       << ", \"boundary_corners\": " << s.boundary_corners
-       << ", \"uncrossed_border_cycles\": " << s.uncrossed_border_cycles
-       << ", \"quads\": " << quads << ", \"non_quads\": " << num_faces(output) - quads
-       << ", \"joined_triangle_pairs\": " << all.dual.joined_triangle_pairs
-       << ", \"dual_dropped_pieces\": " << all.dual.dropped_pieces
-       << ", \"removed_pinches\": " << all.dual.removed_pinches
-       << ", \"joined_parallel_edges\": " << all.dual.joined_parallel_edges
-       << ", \"collapsed_quads\": " << all.collapse.collapsed_quads
-       << ", \"removed_doublets\": " << all.collapse.removed_doublets
-       << ", \"rotated_edges\": " << all.collapse.rotated_edges
-       << ", \"neutral_rotations\": " << all.collapse.neutral_rotations
-       << ", \"cell_size_used\": " << s.cell_size
-       << ", \"topology\": {\"checked\": " << (s.topology_checked ? "true" : "false")
-       << ", \"preserved\": " << (s.topology_preserved() ? "true" : "false")
-       << ", \"closed_loops\": " << s.closed_loops << ", \"harmless_loops\": " << s.harmless_loops
-       << ", \"non_disk_cells\": " << s.non_disk_cells << ", \"lost_components\": " << s.lost_components
-       << ", \"input_euler_characteristic\": " << s.input_euler_characteristic
-       << ", \"primal_euler_characteristic\": " << s.output_euler_characteristic
-       << ", \"refinements\": " << s.topology_refinements << "}"
-       << ", \"valence_histogram\": {";
-  bool first = true;
-  for(const auto& [valence, count] : valences) {
-    json << (first ? "" : ", ") << "\"" << valence << "\": " << count;
-    first = false;
+  // file names may hold any byte: replace what is not UTF-8 rather than fail
+  const auto error_handler = json::error_handler_t::replace;
+  json j;
+  j["input"] = options.input;
+  j["output"] = options.output;
+  j["map"] = options.map;
+  j["D"] = options.map == "position-normal" ? 6 : options.map.rfind("position-normal-color", 0) == 0 ? 9 : 3;
+  j["normal_weight"] = options.map.rfind("position-normal", 0) == 0 ? options.normal_weight : 0.;
+  j["cell_size"] = h;
+  j["seeding"] = options.seeded ? "seeded" : "complete";
+  j["output_kind"] = options.output_kind;
+  j["placement"] = options.placement;
+  j["collapse"] = options.collapse;
+  j["relaxation_steps"] = options.relax;
+  j["triangulated"] = repairs.triangulated_polygons > 0;
+  j["input_vertices"] = num_vertices(input);
+  j["input_faces"] = num_faces(input);
+  j["input_components"] = components(input);
+  j["output_vertices"] = num_vertices(output);
+  j["output_edges"] = num_edges(output);
+  j["output_faces"] = num_faces(output);
+  j["output_components"] = components(output);
+  j["mapped_vertices"] = s.mapped_vertices;
+  j["visited_faces"] = s.visited_faces;
+  j["intersection_vertices"] = s.intersection_vertices;
+  j["digons"] = s.digons;
+  j["non_simple_faces"] = s.non_simple_faces;
+  j["dropped_pieces"] = s.dropped_pieces;
+  j["input_border_cycles"] = border_cycles(input);
+  j["output_border_cycles"] = border_cycles(output);
+  j["boundary_digons"] = s.boundary_digons;
+  j["boundary_corners"] = s.boundary_corners;
+  j["uncrossed_border_cycles"] = s.uncrossed_border_cycles;
+  j["quads"] = quads;
+  j["non_quads"] = num_faces(output) - quads;
+  j["joined_triangle_pairs"] = all.dual.joined_triangle_pairs;
+  j["dual_dropped_pieces"] = all.dual.dropped_pieces;
+  j["removed_pinches"] = all.dual.removed_pinches;
+  j["joined_parallel_edges"] = all.dual.joined_parallel_edges;
+  j["collapsed_quads"] = all.collapse.collapsed_quads;
+  j["removed_doublets"] = all.collapse.removed_doublets;
+  j["rotated_edges"] = all.collapse.rotated_edges;
+  j["neutral_rotations"] = all.collapse.neutral_rotations;
+  j["cell_size_used"] = s.cell_size;
+  j["input_repairs"] = {{"repaired", repairs.repaired()},
+                        {"merged_points", repairs.merged_points},
+                        {"removed_isolated_points", repairs.removed_isolated_points},
+                        {"removed_repeated_corners", repairs.removed_repeated_corners},
+                        {"removed_degenerate_faces", repairs.removed_degenerate_polygons},
+                        {"removed_duplicate_faces", repairs.removed_duplicate_polygons},
+                        {"flipped_faces", repairs.reversed_polygons},
+                        {"flipped_to_face_outward", repairs.reversed_to_face_outward},
+                        {"non_manifold_edges", repairs.non_manifold_edges},
+                        {"split_non_manifold_points", repairs.split_non_manifold_points},
+                        {"triangulated_faces", repairs.triangulated_polygons}};
+  j["topology"] = {{"checked", s.topology_checked},
+                   {"preserved", options.output_kind == "primal" ? s.topology_preserved() : all.topology_preserved()},
+                   {"closed_loops", s.closed_loops},
+                   {"harmless_loops", s.harmless_loops},
+                   {"non_disk_cells", s.non_disk_cells},
+                   {"lost_components", s.lost_components},
+                   {"input_euler_characteristic", s.input_euler_characteristic},
+                   {"primal_euler_characteristic", s.output_euler_characteristic},
+                   {"refinements", s.topology_refinements}};
+  json histogram = json::object();
+  for(const auto& [valence, count] : valences)
+    histogram[std::to_string(valence)] = count;
+  j["valence_histogram"] = histogram;
+  j["time_ms"] = {{"read", io.read_ms},         {"repair", io.repair_ms},
+                  {"seeding", s.time_seeding_ms}, {"tracing", s.time_tracing_ms},
+                  {"faces", s.time_faces_ms},     {"topology", s.time_topology_ms},
+                  {"output", s.time_output_ms},   {"dual", all.dual.time_ms},
+                  {"collapse", all.collapse.time_ms}, {"relaxation", all.time_relaxation_ms},
+                  {"total", all.time_total_ms},   {"write", io.write_ms}};
+  std::cout << j.dump(-1, ' ', false, error_handler) << std::endl;
+}
+
+/// Refuses a report file that would overwrite INPUT or OUTPUT.
+void check_report_path(const Options& options)
+{
+  if(options.topology_report.empty())
+    return;
+  namespace fs = std::filesystem;
+  std::error_code error;
+  const fs::path report = fs::weakly_canonical(fs::absolute(options.topology_report, error), error);
+  for(const std::string& other : {options.input, options.output}) {
+    std::error_code other_error; // (equivalent(): the same file under another name, a hard link)
+    if(options.topology_report == other || (!error && report == fs::weakly_canonical(fs::absolute(other, other_error), other_error)) ||
+       fs::equivalent(options.topology_report, other, other_error))
+      fail("--topology-report '" + options.topology_report + "' would overwrite '" + other + "'");
   }
-  json << "}, \"time_ms\": {\"seeding\": " << s.time_seeding_ms << ", \"tracing\": " << s.time_tracing_ms
-       << ", \"faces\": " << s.time_faces_ms << ", \"topology\": " << s.time_topology_ms
-       << ", \"output\": " << s.time_output_ms
-       << ", \"dual\": " << all.dual.time_ms << ", \"collapse\": " << all.collapse.time_ms
-       << ", \"relaxation\": " << all.time_relaxation_ms
-       << ", \"total\": " << all.time_total_ms << "}}";
-  std::cout << json.str() << std::endl;
 }
 
 } // namespace
@@ -844,18 +890,23 @@ int main(int argc, char** argv)
   // CGAL warnings (e.g. a polygon the constrained triangulation cannot handle) are
   // dealt with by the program; keep stderr to the one-line error contract.
   CGAL::set_warning_handler([](const char*, const char*, const char*, int, const char*) {});
+  rsr_io::remove_temporary_files_on_signals();
   try {
     Options options = parse_arguments(argc, argv);
-    std::vector<RSR::Topology_defect<Mesh::Face_index>> defects;
-    options.defects = &defects;
-    bool triangulated = false;
-    const Mesh input = with_creases_opened(read_input(options.input, triangulated), options);
-    // once, the input read: the runs of --target-vertices and --preserve-topology share it
-    options.max_vertices = vertex_cap(options);
     if(!is_supported_format(options.output))
       fail("cannot write '" + options.output + "': unsupported format (use .off .obj .ply .stl)");
     if(!options.topology_report.empty() && !is_supported_format(options.topology_report))
       fail("cannot write '" + options.topology_report + "': unsupported format (use .off .obj .ply .stl)");
+    check_report_path(options);
+    std::vector<RSR::Topology_defect<Mesh::Face_index>> defects;
+    options.defects = &defects;
+    Io_times io;
+    Input read = read_input(options.input, options.strict);
+    io.read_ms = read.read_ms;
+    io.repair_ms = read.repair_ms;
+    const Mesh input = with_creases_opened(std::move(read.mesh), options);
+    // once, the input read: the runs of --target-vertices and --preserve-topology share it
+    options.max_vertices = vertex_cap(options);
 
     double h = options.cell_size;
     if(!options.absolute) {
@@ -893,12 +944,27 @@ int main(int argc, char** argv)
       fail("at this cell size the dual has " + std::to_string(stats.dual.parallel_edges) +
            " pair(s) of parallel edges, which a mesh file cannot store; use a smaller cell size "
            "or --output primal");
-    write_atomically(output, options.output);
-    if(!options.topology_report.empty())
-      write_atomically(flagged_faces(input, defects), options.topology_report);
-    warn_about_topology(stats.primal, defects);
+
+    // every file is written under a temporary name first, then all are renamed
+    const auto write_start = std::chrono::steady_clock::now();
+    rsr_io::Output_files files;
+    const rsr_io::Write_options write_options{options.binary, 17};
+    try {
+      Silenced_cerr silence; // CGAL's writers explain failures on std::cerr
+      const auto colors = find_vertex_colors(output);
+      files.add(output, options.output, colors ? &*colors : nullptr, write_options);
+      if(!options.topology_report.empty())
+        files.add(flagged_faces(input, defects), options.topology_report, static_cast<const Color_map*>(nullptr),
+                  write_options);
+      files.commit();
+    } catch(const rsr_io::Write_error& e) {
+      fail(e.what());
+    }
+    io.write_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - write_start).count();
+    report_repairs(options.input, read.repairs);
+    warn_about_topology(stats, options, defects);
     if(options.stats)
-      print_stats(options, input, output, stats, h, triangulated);
+      print_stats(options, input, output, stats, h, read.repairs, io);
     return EXIT_SUCCESS;
   } catch(const Failure& f) {
     std::cerr << "range_space_remesh: " << f.message << std::endl;

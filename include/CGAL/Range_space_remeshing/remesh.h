@@ -34,6 +34,10 @@ struct Remesh_statistics
   Collapse_statistics collapse;
   double time_relaxation_ms = 0;
   double time_total_ms = 0;
+
+  /// Whether the quads have the input's topology as far as the checks tell: the
+  /// primal's topology check found no defect and the dual dropped no piece.
+  bool topology_preserved() const { return primal.topology_preserved() && dual.dropped_pieces == 0; }
 };
 
 /*!

@@ -1,13 +1,13 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
 //
-// Fuzz target: the command-line program's input path (CGAL's OFF, OBJ and PLY soup
-// readers, then the soup checks) and the remesher on what it accepts, with a map
+// Fuzz target: the command-line program's input path (its OFF, OBJ, PLY and STL
+// reader, then prepare_input()'s check and repair) and the remesher on what it accepts, with a map
 // and a cell size taken from the input. Bad input must end in a clean exception;
 // anything else (a crash, a sanitizer report, a broken invariant) aborts.
 //
 // Input layout: 6 header bytes, then the file's text.
-//   [0] format: OFF, OBJ, PLY          [1] map: identity, Gauss, R^6, R^5 user map
+//   [0] format: OFF, OBJ, PLY, STL         [1] map: identity, Gauss, R^6, R^5 user map
 //   [2] flags: bit 0 seeded, bits 1-2 relaxation steps, bit 3 no collapse,
 //       bit 4 grid origin at half a cell
 //   [3..4] cell size: 0..7 absurd values (0, -1, NaN, inf, 1e-300, 1e300, denormal,
@@ -18,15 +18,14 @@
 // replays files (the seed corpus and the regressions) as a ctest.
 
 #include "../test_support.h"
-#include "polygon_soup_input.h"
+#include "mesh_file_reader.h"
+
+#include <CGAL/Range_space_remeshing/prepare_input.h>
 
 #include <CGAL/Range_space_remeshing/Gauss_range_map.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 
-#include <CGAL/IO/OBJ.h>
-#include <CGAL/IO/OFF.h>
-#include <CGAL/IO/PLY.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 
 #include <cmath>
@@ -77,54 +76,21 @@ double cell_size_from(std::uint16_t code, double diagonal)
   return diagonal > 0 ? fraction * diagonal : fraction;
 }
 
-/// Whether the text has an integer of 8 digits or more (not next to a '.' or an 'e').
-/// CGAL's readers allocate what a file's counts and face degrees say: an absurd one
-/// gives std::bad_alloc, which the command-line program reports, but AddressSanitizer
-/// aborts on such allocations instead. Those inputs test CGAL, not us: skipped.
-/// (Counts in exponent notation, "1e9", are refused by the OFF guard before.)
-bool has_huge_integer(const std::string& text)
-{
-  std::size_t run = 0;
-  for(std::size_t i = 0; i <= text.size(); ++i) {
-    const char c = i < text.size() ? text[i] : ' ';
-    if(c >= '0' && c <= '9') {
-      ++run;
-      continue;
-    }
-    const std::size_t start = i - run;
-    const bool decimal = c == '.' || c == 'e' || c == 'E' || (start > 0 && (text[start - 1] == '.' || text[start - 1] == 'e' || text[start - 1] == 'E'));
-    if(run >= 8 && !decimal)
-      return true;
-    run = 0;
-  }
-  return false;
-}
-
+/// The program's reader (mesh_file_reader.h) on `text` as a file of the format
+/// `format` (0 OFF, 1 OBJ, 2 PLY, 3 STL); false if it refuses the text.
 bool read_soup(int format, const std::string& text, std::vector<Point>& points,
                std::vector<std::vector<std::size_t>>& polygons)
 {
-  std::istringstream in(text);
-  // CGAL's readers explain failures on std::cerr: keep the fuzzer's output readable
-  std::streambuf* saved = std::cerr.rdbuf(nullptr);
-  bool ok = false;
+  static const char* const extensions[] = {"off", "obj", "ply", "stl"};
   try {
-    if(format == 0) {
-      std::istringstream header(text);
-      rsr_input::check_off_counts(header, "the input", text.size());
-      ok = CGAL::IO::read_OFF(in, points, polygons);
-    }
-    else if(format == 1)
-      ok = CGAL::IO::read_OBJ(in, points, polygons);
-    else {
-      std::istringstream header(text);
-      rsr_input::check_ply_header(header, "the input", text.size());
-      ok = CGAL::IO::read_PLY(in, points, polygons);
-    }
-  } catch(const std::exception&) {
-    ok = false;
+    rsr_io::Polygon_soup soup = rsr_io::internal::parse_mesh(text, extensions[format], "the input");
+    for(const auto& p : soup.points)
+      points.emplace_back(p[0], p[1], p[2]);
+    polygons = std::move(soup.polygons);
+    return true;
+  } catch(const rsr_io::Read_error&) {
+    return false;
   }
-  std::cerr.rdbuf(saved);
-  return ok;
 }
 
 [[noreturn]] void broken(const char* what)
@@ -152,21 +118,23 @@ void run_one(const std::uint8_t* data, std::size_t size)
 {
   if(size < 6)
     return;
-  const int format = data[0] % 3, map = data[1] % 4, flags = data[2];
+  const int format = data[0] % 4, map = data[1] % 4, flags = data[2];
   const std::uint16_t cell_code = std::uint16_t(data[3] | (data[4] << 8));
   const double normal_weight = 4. * data[5] / 255.;
   const std::string text(reinterpret_cast<const char*>(data + 6), size - 6);
 
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
-  if(has_huge_integer(text) || !read_soup(format, text, points, polygons) || points.size() > 5000 || polygons.size() > 5000)
+  if(!read_soup(format, text, points, polygons) || points.size() > 5000 || polygons.size() > 5000)
     return;
   Mesh mesh;
   try {
-    rsr_input::polygon_soup_to_triangle_mesh(points, polygons, "the input", mesh);
-  } catch(const rsr_input::Input_error&) {
+    RSR::prepare_input(points, polygons, mesh);
+  } catch(const RSR::Remeshing_error&) {
     return;
   }
+  if(!CGAL::is_valid_polygon_mesh(mesh) || !CGAL::is_triangle_mesh(mesh))
+    broken("prepare_input() gave no valid triangle mesh");
   const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh);
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
                                     CGAL::square(box.zmax() - box.zmin()));

@@ -1,0 +1,767 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The command-line program's reader: OFF (with C, N, ST, 4 and n prefixes), PLY
+// (ascii, binary little and big endian, any element order and property types),
+// OBJ and STL (ascii and binary) into a polygon soup with its vertex colours, in
+// one pass over the file mapped in memory.
+//
+// Why hand-written, where CGAL and Debian have readers: CGAL 5.5's readers crash on
+// legal PLY files (a face element before the vertex element, float colours), read
+// colours only in a second pass through a mesh, and allocate whatever a file's counts
+// and list lengths say (a 241-byte PLY took 3.8 GB); assimp, OpenMesh and
+// tinyobjloader parse through iostreams and have their own histories of allocations
+// driven by file counts. The four formats are small; what matters is that no count
+// in a file is trusted: every count and list length is checked against the bytes
+// left before anything is allocated, so the soup never takes more than a fixed
+// multiple of the file's size (see kMaximum_bytes_per_file_byte), and any byte
+// sequence ends in a soup or in one Read_error.
+
+#ifndef RANGE_SPACE_REMESHING_EXAMPLES_MESH_FILE_READER_H
+#define RANGE_SPACE_REMESHING_EXAMPLES_MESH_FILE_READER_H
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace rsr_io {
+
+/// Why a file cannot be read, in one line.
+struct Read_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/// What a file holds: points, polygons (indices into `points`, unchecked) and, if
+/// the file has vertex colours, one colour per point (red, green, blue in 0..255).
+struct Polygon_soup
+{
+  std::vector<std::array<double, 3>> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  std::vector<std::array<unsigned char, 3>> colors; // empty, or one per point
+};
+
+/// The largest a soup can be, in bytes of memory per byte of file: a binary PLY face
+/// of three one-byte indices (4 bytes of file) becomes a vector of three indices
+/// (24 bytes, plus the vector and the allocator's header: about 64 bytes).
+constexpr double kMaximum_bytes_per_file_byte = 24;
+
+namespace internal {
+
+/// A regular file mapped read-only in memory.
+class Mapped_file
+{
+public:
+  explicit Mapped_file(const std::string& path)
+  {
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if(fd < 0)
+      throw Read_error("cannot open '" + path + "': " + std::strerror(errno));
+    struct stat status;
+    if(::fstat(fd, &status) != 0 || !S_ISREG(status.st_mode)) {
+      ::close(fd);
+      throw Read_error("'" + path + "' is not a regular file");
+    }
+    size_ = std::size_t(status.st_size);
+    if(size_ > 0) {
+      void* data = ::mmap(nullptr, size_, PROT_READ, MAP_PRIVATE, fd, 0);
+      if(data == MAP_FAILED) {
+        ::close(fd);
+        throw Read_error("cannot read '" + path + "': " + std::strerror(errno));
+      }
+      data_ = static_cast<const char*>(data);
+      ::madvise(data, size_, MADV_SEQUENTIAL);
+    }
+    ::close(fd);
+  }
+  ~Mapped_file()
+  {
+    if(data_)
+      ::munmap(const_cast<char*>(data_), size_);
+  }
+  Mapped_file(const Mapped_file&) = delete;
+  Mapped_file& operator=(const Mapped_file&) = delete;
+  std::string_view text() const { return {data_ ? data_ : "", size_}; }
+
+private:
+  const char* data_ = nullptr;
+  std::size_t size_ = 0;
+};
+
+/// Reads words, numbers and lines from a text; never reads past its end.
+class Text_cursor
+{
+public:
+  explicit Text_cursor(std::string_view text) : p_(text.data()), end_(text.data() + text.size()) {}
+
+  std::size_t bytes_left() const { return std::size_t(end_ - p_); }
+  const char* position() const { return p_; }
+  bool at_end() const { return p_ == end_; }
+
+  /// Skips blanks and, if `comment` is not 0, from `comment` to the end of the line.
+  void skip_blanks_in_line(char comment = 0)
+  {
+    while(p_ != end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r' || *p_ == '\f' || *p_ == '\v'))
+      ++p_;
+    if(comment && p_ != end_ && *p_ == comment)
+      while(p_ != end_ && *p_ != '\n')
+        ++p_;
+  }
+  bool at_line_end(char comment = 0)
+  {
+    skip_blanks_in_line(comment);
+    return p_ == end_ || *p_ == '\n';
+  }
+  /// Moves to the start of the next line.
+  void next_line()
+  {
+    while(p_ != end_ && *p_ != '\n')
+      ++p_;
+    if(p_ != end_)
+      ++p_;
+  }
+  /// Skips all whitespace, newlines included.
+  void skip_space()
+  {
+    while(p_ != end_ && (*p_ == ' ' || *p_ == '\t' || *p_ == '\r' || *p_ == '\n' || *p_ == '\f' || *p_ == '\v'))
+      ++p_;
+  }
+  /// The next word on this line (empty at the line's end).
+  std::string_view word_in_line(char comment = 0)
+  {
+    skip_blanks_in_line(comment);
+    const char* start = p_;
+    while(p_ != end_ && !is_space(*p_) && !(comment && *p_ == comment))
+      ++p_;
+    return {start, std::size_t(p_ - start)};
+  }
+  /// The next word, across lines.
+  std::string_view word()
+  {
+    skip_space();
+    const char* start = p_;
+    while(p_ != end_ && !is_space(*p_))
+      ++p_;
+    return {start, std::size_t(p_ - start)};
+  }
+  /// The rest of the line, without its end.
+  std::string_view rest_of_line()
+  {
+    const char* start = p_;
+    while(p_ != end_ && *p_ != '\n')
+      ++p_;
+    std::string_view line(start, std::size_t(p_ - start));
+    if(!line.empty() && line.back() == '\r')
+      line.remove_suffix(1);
+    return line;
+  }
+
+  static bool is_space(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v'; }
+
+private:
+  const char* p_;
+  const char* end_;
+};
+
+/// `word` (an optional '+', then what std::from_chars reads) as a number, or false
+/// (also on overflow). Doubles may be NaN or infinite: callers check what they need.
+template <class Number>
+bool parse_number(std::string_view word, Number& value)
+{
+  if(!word.empty() && word.front() == '+')
+    word.remove_prefix(1);
+  if(word.empty())
+    return false;
+  const auto [end, error] = std::from_chars(word.data(), word.data() + word.size(), value);
+  return error == std::errc() && end == word.data() + word.size();
+}
+
+inline bool to_double(std::string_view word, double& value) { return parse_number(word, value); }
+inline bool to_integer(std::string_view word, long long& value) { return parse_number(word, value); }
+
+/// A colour channel from a file: floats in [0, 1], integers in 0..255 (clamped).
+inline unsigned char color_channel(double value, bool is_float)
+{
+  const double scaled = is_float ? value * 255. : value;
+  if(!(scaled > 0))
+    return 0;
+  return scaled >= 255 ? 255 : static_cast<unsigned char>(std::lround(scaled));
+}
+
+/// Reserves room for `count` items, but never more than the bytes left could hold
+/// at `minimum_bytes` each: a count in a file is a promise, not a fact.
+template <class Vector>
+void reserve_at_most(Vector& v, std::uint64_t count, std::size_t bytes_left, std::size_t minimum_bytes)
+{
+  const std::uint64_t possible = bytes_left / std::max<std::size_t>(minimum_bytes, 1);
+  v.reserve(std::size_t(std::min(count, possible)));
+}
+
+// ------------------------------------------------------------------------ OFF
+
+/// A text OFF file: header "[ST][C][N][4][n]OFF", counts, one vertex per line
+/// (position, then normal, colour, texture coordinates as the prefixes say), one
+/// face per line (degree, indices, optional colour). Binary OFF is refused.
+inline Polygon_soup read_off(std::string_view text, const std::string& name)
+{
+  Text_cursor in(text);
+  auto fail = [&](const std::string& what) -> void { throw Read_error(name + ": " + what); };
+  auto next_content_line = [&] { // skips empty and comment lines
+    while(!in.at_end() && in.at_line_end('#'))
+      in.next_line();
+  };
+  next_content_line();
+  const std::string_view keyword = in.word_in_line('#');
+  if(keyword.size() < 3 || keyword.substr(keyword.size() - 3) != "OFF")
+    fail("not an OFF file (no OFF keyword on its first line)");
+  std::string_view prefix = keyword.substr(0, keyword.size() - 3);
+  auto take = [&prefix](std::string_view p) {
+    if(prefix.substr(0, p.size()) != p)
+      return false;
+    prefix.remove_prefix(p.size());
+    return true;
+  };
+  const bool has_texture = take("ST"), has_color = take("C"), has_normal = take("N"), homogeneous = take("4"),
+             has_dimension = take("n");
+  if(!prefix.empty())
+    fail("unknown OFF keyword '" + std::string(keyword) + "'");
+  if(in.word_in_line('#') == "BINARY")
+    fail("binary OFF is not supported (convert it to text OFF, PLY or STL)");
+  std::vector<long long> header; // [dimension,] vertices, faces, edges
+  const std::size_t wanted = has_dimension ? 3 : 2;      // the edge count is optional
+  while(header.size() < wanted && !in.at_end()) {
+    std::string_view w = in.word_in_line('#');
+    if(w.empty()) {
+      in.next_line();
+      next_content_line();
+      continue;
+    }
+    long long n = 0;
+    if(!to_integer(w, n) || n < 0)
+      fail("its header has a count that is not a non-negative integer ('" + std::string(w) + "')");
+    header.push_back(n);
+  }
+  if(header.size() < wanted)
+    fail("its header is truncated");
+  if(has_dimension && header[0] != 3)
+    fail("only 3-dimensional nOFF files are supported (dimension " + std::to_string(header[0]) + ")");
+  const long long vertex_count = header[wanted - 2], face_count = header[wanted - 1];
+  if(std::uint64_t(vertex_count) > in.bytes_left() || std::uint64_t(face_count) > in.bytes_left())
+    fail("its header's counts are larger than the file could hold");
+  in.next_line(); // the rest of the header line (the edge count)
+
+  Polygon_soup soup;
+  reserve_at_most(soup.points, std::uint64_t(vertex_count), in.bytes_left(), 6);
+  const std::size_t position_size = homogeneous ? 4 : 3;
+  bool any_color = false;
+  std::vector<std::array<unsigned char, 3>> colors;
+  for(long long v = 0; v < vertex_count; ++v) {
+    next_content_line();
+    if(in.at_end())
+      fail("it ends before its " + std::to_string(vertex_count) + " vertices");
+    double x[4] = {0, 0, 0, 1};
+    for(std::size_t c = 0; c < position_size; ++c)
+      if(!to_double(in.word_in_line('#'), x[c]))
+        fail("vertex " + std::to_string(v) + " has a coordinate that is not a number");
+    if(homogeneous) {
+      if(x[3] == 0)
+        fail("vertex " + std::to_string(v) + " has a homogeneous coordinate of 0");
+      x[0] /= x[3], x[1] /= x[3], x[2] /= x[3];
+    }
+    soup.points.push_back({{x[0], x[1], x[2]}});
+    if(has_normal)
+      for(int c = 0; c < 3; ++c)
+        in.word_in_line('#');
+    std::array<unsigned char, 3> color{{0, 0, 0}};
+    if(has_color && !in.at_line_end('#')) { // r g b [a], integers in 0..255 or floats in [0, 1]
+      // (a vertex without any colour, which some writers leave, keeps black)
+      std::array<std::string_view, 3> words{{in.word_in_line('#'), in.word_in_line('#'), in.word_in_line('#')}};
+      bool is_float = false;
+      std::array<double, 3> values{};
+      for(int c = 0; c < 3; ++c) {
+        if(!to_double(words[std::size_t(c)], values[std::size_t(c)]))
+          fail("vertex " + std::to_string(v) + " has a colour that is not a number");
+        is_float = is_float || words[std::size_t(c)].find_first_of(".eE") != std::string_view::npos;
+      }
+      for(int c = 0; c < 3; ++c)
+        color[std::size_t(c)] = color_channel(values[std::size_t(c)], is_float);
+      any_color = true;
+    }
+    colors.push_back(color);
+    (void)has_texture; // texture coordinates, if any, are the rest of the line
+    in.next_line();
+  }
+  if(any_color)
+    soup.colors = std::move(colors);
+  reserve_at_most(soup.polygons, std::uint64_t(face_count), in.bytes_left(), 8);
+  for(long long f = 0; f < face_count; ++f) {
+    next_content_line();
+    if(in.at_end())
+      fail("it ends before its " + std::to_string(face_count) + " faces");
+    long long degree = 0;
+    if(!to_integer(in.word_in_line('#'), degree) || degree < 0)
+      fail("face " + std::to_string(f) + " has a degree that is not a non-negative integer");
+    if(std::uint64_t(degree) > in.bytes_left() / 2)
+      fail("face " + std::to_string(f) + " has more corners than the file could hold");
+    std::vector<std::size_t> polygon(static_cast<std::size_t>(degree));
+    for(auto& corner : polygon) {
+      long long index = 0;
+      if(!to_integer(in.word_in_line('#'), index) || index < 0)
+        fail("face " + std::to_string(f) + " has an index that is not a non-negative integer");
+      corner = std::size_t(index);
+    }
+    soup.polygons.push_back(std::move(polygon));
+    in.next_line();
+  }
+  return soup;
+}
+
+// ------------------------------------------------------------------------ PLY
+
+enum class Ply_type { INT8, UINT8, INT16, UINT16, INT32, UINT32, FLOAT32, FLOAT64 };
+
+inline bool ply_type_of(std::string_view word, Ply_type& type)
+{
+  static const std::pair<const char*, Ply_type> names[] = {
+      {"char", Ply_type::INT8},     {"int8", Ply_type::INT8},       {"uchar", Ply_type::UINT8},
+      {"uint8", Ply_type::UINT8},   {"short", Ply_type::INT16},     {"int16", Ply_type::INT16},
+      {"ushort", Ply_type::UINT16}, {"uint16", Ply_type::UINT16},   {"int", Ply_type::INT32},
+      {"int32", Ply_type::INT32},   {"uint", Ply_type::UINT32},     {"uint32", Ply_type::UINT32},
+      {"float", Ply_type::FLOAT32}, {"float32", Ply_type::FLOAT32}, {"double", Ply_type::FLOAT64},
+      {"float64", Ply_type::FLOAT64}};
+  for(const auto& [n, t] : names)
+    if(word == n) {
+      type = t;
+      return true;
+    }
+  return false;
+}
+
+inline std::size_t ply_size(Ply_type type)
+{
+  switch(type) {
+  case Ply_type::INT8: case Ply_type::UINT8: return 1;
+  case Ply_type::INT16: case Ply_type::UINT16: return 2;
+  case Ply_type::INT32: case Ply_type::UINT32: case Ply_type::FLOAT32: return 4;
+  default: return 8;
+  }
+}
+
+inline bool is_float(Ply_type type) { return type == Ply_type::FLOAT32 || type == Ply_type::FLOAT64; }
+
+struct Ply_property
+{
+  std::string name;
+  Ply_type type = Ply_type::FLOAT32;
+  bool is_list = false;
+  Ply_type count_type = Ply_type::UINT8;
+};
+
+struct Ply_element
+{
+  std::string name;
+  std::uint64_t count = 0;
+  std::vector<Ply_property> properties;
+};
+
+/// Reads the scalars of a binary PLY body.
+class Binary_cursor
+{
+public:
+  Binary_cursor(std::string_view bytes, bool big_endian) : p_(bytes.data()), end_(bytes.data() + bytes.size()),
+                                                           swap_(big_endian != host_is_big_endian()) {}
+  std::size_t bytes_left() const { return std::size_t(end_ - p_); }
+  /// The next value of `type` as a double; false if the file ends first.
+  bool read(Ply_type type, double& value)
+  {
+    const std::size_t size = ply_size(type);
+    if(bytes_left() < size)
+      return false;
+    unsigned char b[8];
+    std::memcpy(b, p_, size);
+    p_ += size;
+    if(swap_)
+      std::reverse(b, b + size);
+    switch(type) {
+    case Ply_type::INT8: value = double(static_cast<std::int8_t>(b[0])); break;
+    case Ply_type::UINT8: value = double(b[0]); break;
+    case Ply_type::INT16: value = double(load<std::int16_t>(b)); break;
+    case Ply_type::UINT16: value = double(load<std::uint16_t>(b)); break;
+    case Ply_type::INT32: value = double(load<std::int32_t>(b)); break;
+    case Ply_type::UINT32: value = double(load<std::uint32_t>(b)); break;
+    case Ply_type::FLOAT32: value = double(load<float>(b)); break;
+    default: value = load<double>(b); break;
+    }
+    return true;
+  }
+
+private:
+  template <class T>
+  static T load(const unsigned char* b)
+  {
+    T t;
+    std::memcpy(&t, b, sizeof(T));
+    return t;
+  }
+  static bool host_is_big_endian()
+  {
+    const std::uint16_t one = 1;
+    unsigned char first;
+    std::memcpy(&first, &one, 1);
+    return first == 0;
+  }
+  const char* p_;
+  const char* end_;
+  bool swap_;
+};
+
+/// Reads the values of a PLY body, ascii or binary, as doubles.
+class Ply_values
+{
+public:
+  Ply_values(std::string_view body, int format) : text_(body), binary_(body, format == 2), format_(format) {}
+  std::size_t bytes_left() const { return format_ == 0 ? text_.bytes_left() : binary_.bytes_left(); }
+  bool read(Ply_type type, double& value)
+  {
+    if(format_ != 0)
+      return binary_.read(type, value);
+    return to_double(text_.word(), value);
+  }
+  /// The fewest bytes a value of `type` takes.
+  std::size_t minimum_size(Ply_type type) const { return format_ == 0 ? 2 : ply_size(type); }
+
+private:
+  Text_cursor text_;
+  Binary_cursor binary_;
+  int format_; // 0 ascii, 1 binary little endian, 2 binary big endian
+};
+
+inline Polygon_soup read_ply(std::string_view text, const std::string& name)
+{
+  auto fail = [&](const std::string& what) -> void { throw Read_error(name + ": " + what); };
+  Text_cursor header(text);
+  if(header.word_in_line() != "ply")
+    fail("not a PLY file (no 'ply' on its first line)");
+  header.next_line();
+  int format = -1;
+  std::vector<Ply_element> elements;
+  for(std::size_t line = 2;; ++line, header.next_line()) {
+    if(header.at_end())
+      fail("its PLY header has no end_header");
+    const std::string_view keyword = header.word_in_line();
+    const std::string where = " (line " + std::to_string(line) + ")";
+    if(keyword == "end_header") {
+      header.next_line();
+      break;
+    }
+    if(keyword.empty() || keyword == "comment" || keyword == "obj_info")
+      continue;
+    if(keyword == "format") {
+      const std::string_view kind = header.word_in_line();
+      format = kind == "ascii" ? 0 : kind == "binary_little_endian" ? 1 : kind == "binary_big_endian" ? 2 : -1;
+      if(format < 0)
+        fail("unknown PLY format '" + std::string(kind) + "'" + where);
+    } else if(keyword == "element") {
+      Ply_element element;
+      element.name = std::string(header.word_in_line());
+      long long count = -1;
+      const std::string_view word = header.word_in_line();
+      if(!to_integer(word, count) || count < 0 || std::uint64_t(count) > text.size())
+        fail("its PLY element count cannot be right ('" + std::string(word) + "'" + where + ")");
+      element.count = std::uint64_t(count);
+      elements.push_back(std::move(element));
+    } else if(keyword == "property") {
+      if(elements.empty())
+        fail("it has a PLY property before any element" + where);
+      Ply_property property;
+      std::string_view type = header.word_in_line();
+      if(type == "list") {
+        property.is_list = true;
+        if(!ply_type_of(header.word_in_line(), property.count_type) || is_float(property.count_type))
+          fail("its PLY list has no integer count type" + where);
+        type = header.word_in_line();
+      }
+      if(!ply_type_of(type, property.type))
+        fail("unknown PLY property type '" + std::string(type) + "'" + where);
+      property.name = std::string(header.word_in_line());
+      elements.back().properties.push_back(std::move(property));
+    } else {
+      fail("unknown PLY header keyword '" + std::string(keyword) + "'" + where);
+    }
+  }
+  if(format < 0)
+    fail("its PLY header has no format line");
+
+  Polygon_soup soup;
+  bool has_vertices = false, has_faces = false, any_color = false;
+  std::vector<std::array<unsigned char, 3>> colors;
+  Ply_values values(text.substr(std::size_t(header.position() - text.data())), format);
+  for(const Ply_element& element : elements) {
+    const bool is_vertex = element.name == "vertex" && !has_vertices;
+    const bool is_face = element.name == "face" && !has_faces;
+    has_vertices = has_vertices || is_vertex;
+    has_faces = has_faces || is_face;
+    std::size_t minimum = 0; // the fewest bytes an element of this kind takes
+    for(const Ply_property& property : element.properties)
+      minimum += values.minimum_size(property.is_list ? property.count_type : property.type);
+    if(minimum == 0 ? element.count > 0 : element.count > values.bytes_left() / minimum)
+      fail("it has fewer bytes than its " + std::to_string(element.count) + " '" + element.name + "' elements need");
+    // which property is what: -1 where absent
+    int coordinate[3] = {-1, -1, -1}, channel[3] = {-1, -1, -1}, indices = -1;
+    for(std::size_t p = 0; p < element.properties.size(); ++p) {
+      const Ply_property& property = element.properties[p];
+      const std::string& n = property.name;
+      const int i = int(p);
+      if(!property.is_list) {
+        if(n == "x") coordinate[0] = i;
+        else if(n == "y") coordinate[1] = i;
+        else if(n == "z") coordinate[2] = i;
+        else if(n == "red" || n == "r" || n == "diffuse_red") channel[0] = i;
+        else if(n == "green" || n == "g" || n == "diffuse_green") channel[1] = i;
+        else if(n == "blue" || n == "b" || n == "diffuse_blue") channel[2] = i;
+      } else if(n == "vertex_indices" || n == "vertex_index") {
+        indices = i;
+      }
+    }
+    if(is_vertex && (coordinate[0] < 0 || coordinate[1] < 0 || coordinate[2] < 0))
+      fail("its PLY vertices have no x, y and z");
+    if(is_face && indices < 0)
+      fail("its PLY faces have no vertex_indices list");
+    const bool colored = is_vertex && channel[0] >= 0 && channel[1] >= 0 && channel[2] >= 0;
+    if(is_vertex) {
+      reserve_at_most(soup.points, element.count, values.bytes_left(), minimum);
+      if(colored)
+        reserve_at_most(colors, element.count, values.bytes_left(), minimum);
+    }
+    if(is_face)
+      reserve_at_most(soup.polygons, element.count, values.bytes_left(), minimum);
+    for(std::uint64_t e = 0; e < element.count; ++e) {
+      std::array<double, 3> point{};
+      std::array<unsigned char, 3> color{};
+      for(std::size_t p = 0; p < element.properties.size(); ++p) {
+        const Ply_property& property = element.properties[p];
+        double value = 0;
+        if(!property.is_list) {
+          if(!values.read(property.type, value))
+            fail("its '" + element.name + "' element " + std::to_string(e) + " is truncated or not a number");
+          for(int c = 0; c < 3; ++c) {
+            if(coordinate[c] == int(p))
+              point[std::size_t(c)] = value;
+            if(channel[c] == int(p))
+              color[std::size_t(c)] = color_channel(value, is_float(property.type));
+          }
+          continue;
+        }
+        double length = 0;
+        if(!values.read(property.count_type, length) || length < 0)
+          fail("its '" + element.name + "' element " + std::to_string(e) + " has no valid list length");
+        if(length > double(values.bytes_left() / values.minimum_size(property.type)))
+          fail("its '" + element.name + "' element " + std::to_string(e) + " has a list longer than the file");
+        std::vector<std::size_t> polygon;
+        if(int(p) == indices && is_face)
+          polygon.reserve(std::size_t(length));
+        for(std::size_t i = 0; i < std::size_t(length); ++i) {
+          if(!values.read(property.type, value))
+            fail("its '" + element.name + "' element " + std::to_string(e) + " is truncated or not a number");
+          if(int(p) == indices && is_face) {
+            if(!(value >= 0 && value < 1e15) || value != std::floor(value))
+              fail("face " + std::to_string(e) + " has an index that is not a non-negative integer");
+            polygon.push_back(std::size_t(value));
+          }
+        }
+        if(int(p) == indices && is_face)
+          soup.polygons.push_back(std::move(polygon));
+      }
+      if(is_vertex) {
+        soup.points.push_back(point);
+        if(colored)
+          colors.push_back(color);
+      }
+    }
+    any_color = any_color || colored;
+  }
+  if(!has_vertices)
+    fail("it has no PLY vertex element");
+  if(any_color)
+    soup.colors = std::move(colors);
+  return soup;
+}
+
+// ------------------------------------------------------------------------ OBJ
+
+/// "v x y z [w | r g b]" and "f a b c ..." lines (a corner: "i", "i/t", "i//n",
+/// "i/t/n"; negative indices count back from the last vertex); other lines ignored.
+inline Polygon_soup read_obj(std::string_view text, const std::string& name)
+{
+  auto fail = [&](std::size_t line, const std::string& what) -> void {
+    throw Read_error(name + ": " + what + " (line " + std::to_string(line) + ")");
+  };
+  Text_cursor in(text);
+  Polygon_soup soup;
+  std::vector<std::array<unsigned char, 3>> colors;
+  bool any_color = false;
+  for(std::size_t line = 1; !in.at_end(); ++line, in.next_line()) {
+    const std::string_view keyword = in.word_in_line('#');
+    if(keyword == "v") {
+      double x[7];
+      int n = 0;
+      for(std::string_view w; n < 7 && !(w = in.word_in_line('#')).empty(); ++n)
+        if(!to_double(w, x[n]))
+          fail(line, "a vertex has a coordinate that is not a number");
+      if(n < 3)
+        fail(line, "a vertex has fewer than 3 coordinates");
+      soup.points.push_back({{x[0], x[1], x[2]}});
+      std::array<unsigned char, 3> color{};
+      if(n >= 6) { // x y z r g b, colours in [0, 1]
+        for(int c = 0; c < 3; ++c)
+          color[std::size_t(c)] = color_channel(x[3 + c], true);
+        any_color = true;
+      }
+      colors.push_back(color);
+    } else if(keyword == "f") {
+      std::vector<std::size_t> polygon;
+      for(std::string_view w; !(w = in.word_in_line('#')).empty();) {
+        long long index = 0;
+        if(!to_integer(w.substr(0, w.find('/')), index) || index == 0)
+          fail(line, "a face has a vertex index that is not a non-zero integer");
+        const long long count = static_cast<long long>(soup.points.size());
+        if(index < 0)
+          index += count + 1; // relative to the vertices read so far
+        if(index < 1 || index > count)
+          fail(line, "a face refers to a vertex not defined before it");
+        polygon.push_back(std::size_t(index - 1));
+      }
+      soup.polygons.push_back(std::move(polygon));
+    }
+  }
+  if(any_color)
+    soup.colors = std::move(colors);
+  return soup;
+}
+
+// ------------------------------------------------------------------------ STL
+
+/// Whether an STL file is binary: its size is that of its triangle count, or it
+/// does not start with "solid" (some binary files do: the size decides first).
+inline bool is_binary_stl(std::string_view text)
+{
+  if(text.size() >= 84) {
+    std::uint32_t count = 0;
+    std::memcpy(&count, text.data() + 80, 4);
+    if(84 + 50 * std::uint64_t(count) == text.size())
+      return true;
+  }
+  Text_cursor in(text);
+  return in.word() != "solid";
+}
+
+/// Every triangle with its own three points, as STL stores them (the repair merges
+/// the points that coincide).
+inline Polygon_soup read_stl(std::string_view text, const std::string& name)
+{
+  auto fail = [&](const std::string& what) -> void { throw Read_error(name + ": " + what); };
+  Polygon_soup soup;
+  if(is_binary_stl(text)) {
+    if(text.size() < 84)
+      fail("not an STL file (too short for a binary STL, and no 'solid' keyword)");
+    std::uint32_t count = 0;
+    std::memcpy(&count, text.data() + 80, 4); // STL is little endian, as the hosts we build for
+    if(84 + 50 * std::uint64_t(count) > text.size())
+      fail("its binary STL triangle count (" + std::to_string(count) + ") is larger than the file");
+    soup.points.reserve(3 * std::size_t(count));
+    soup.polygons.reserve(count);
+    for(std::uint32_t t = 0; t < count; ++t) {
+      const char* record = text.data() + 84 + 50 * std::size_t(t) + 12; // after the normal
+      std::vector<std::size_t> triangle;
+      for(int c = 0; c < 3; ++c) {
+        float xyz[3];
+        std::memcpy(xyz, record + 12 * c, 12);
+        triangle.push_back(soup.points.size());
+        soup.points.push_back({{double(xyz[0]), double(xyz[1]), double(xyz[2])}});
+      }
+      soup.polygons.push_back(std::move(triangle));
+    }
+    return soup;
+  }
+  Text_cursor in(text);
+  std::vector<std::size_t> loop;
+  for(std::string_view w; !(w = in.word()).empty();) {
+    if(w == "vertex") {
+      std::array<double, 3> p{};
+      for(double& x : p)
+        if(!to_double(in.word(), x))
+          fail("an STL vertex has a coordinate that is not a number");
+      if(loop.size() >= 3)
+        fail("an STL facet has more than 3 vertices");
+      loop.push_back(soup.points.size());
+      soup.points.push_back(p);
+    } else if(w == "endloop" || w == "endfacet") {
+      if(!loop.empty())
+        soup.polygons.push_back(std::move(loop));
+      loop.clear();
+    }
+  }
+  if(!loop.empty())
+    fail("its last STL facet is not closed (no endloop)");
+  return soup;
+}
+
+// ------------------------------------------------------------------------ entry
+
+/// The extension of `path`, lower case, without the dot ("" if none).
+inline std::string extension_of(const std::string& path)
+{
+  const auto dot = path.find_last_of('.');
+  const auto slash = path.find_last_of('/');
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return "";
+  std::string ext = path.substr(dot + 1);
+  for(char& c : ext)
+    c = char(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+/// The soup in `text`, a file of format `extension` ("off", "ply", "obj", "stl");
+/// `name` names it in messages. Throws Read_error.
+inline Polygon_soup parse_mesh(std::string_view text, const std::string& extension, const std::string& name)
+{
+  if(text.empty())
+    throw Read_error(name + " is empty");
+  if(extension == "off")
+    return read_off(text, name);
+  if(extension == "ply")
+    return read_ply(text, name);
+  if(extension == "obj")
+    return read_obj(text, name);
+  if(extension == "stl")
+    return read_stl(text, name);
+  throw Read_error(name + ": unsupported format (use .off .obj .ply .stl)");
+}
+
+} // namespace internal
+
+using internal::extension_of;
+
+/// The soup in the file `path`, its format chosen by its extension. Throws Read_error.
+inline Polygon_soup read_mesh_file(const std::string& path)
+{
+  const internal::Mapped_file file(path);
+  return internal::parse_mesh(file.text(), extension_of(path), "'" + path + "'");
+}
+
+} // namespace rsr_io
+
+#endif // RANGE_SPACE_REMESHING_EXAMPLES_MESH_FILE_READER_H

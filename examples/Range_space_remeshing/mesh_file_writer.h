@@ -1,0 +1,233 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The command-line program's writer: a mesh goes to a new temporary file next to
+// its destination (created exclusively: an existing file or a link planted at its
+// name is never followed), and every file of a run is renamed into place only once
+// all of them are written, so that a failing run creates and overwrites nothing.
+// The temporary files are removed on every error path and on SIGINT / SIGTERM.
+
+#ifndef RANGE_SPACE_REMESHING_EXAMPLES_MESH_FILE_WRITER_H
+#define RANGE_SPACE_REMESHING_EXAMPLES_MESH_FILE_WRITER_H
+
+#include "mesh_file_reader.h" // extension_of
+
+#include <CGAL/Range_space_remeshing/prepare_input.h> // internal::fan_triangulate
+
+#include <CGAL/IO/Color.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/IO/OBJ.h>
+#include <CGAL/boost/graph/IO/OFF.h>
+#include <CGAL/boost/graph/IO/PLY.h>
+#include <CGAL/boost/graph/IO/STL.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <ext/stdio_filebuf.h> // an ostream on the file descriptor mkstemp gives
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+namespace rsr_io {
+
+/// Why a file cannot be written, in one line.
+struct Write_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+namespace internal {
+
+/// The temporary files not yet renamed, for the signal handler: fixed storage,
+/// as a handler may not allocate.
+struct Pending_files
+{
+  static constexpr int capacity = 4;
+  static constexpr std::size_t path_size = 4096;
+  char paths[capacity][path_size];
+  volatile std::sig_atomic_t used[capacity];
+};
+
+inline Pending_files& pending_files()
+{
+  static Pending_files files{};
+  return files;
+}
+
+extern "C" inline void remove_pending_files_and_die(int signal_number)
+{
+  Pending_files& files = pending_files();
+  for(int i = 0; i < Pending_files::capacity; ++i)
+    if(files.used[i])
+      ::unlink(files.paths[i]); // async-signal-safe
+  std::signal(signal_number, SIG_DFL);
+  std::raise(signal_number);
+}
+
+/// The permissions a new file gets from this process' umask (mkstemp gives 0600).
+inline mode_t new_file_mode()
+{
+  static const mode_t mode = [] {
+    const mode_t mask = ::umask(0);
+    ::umask(mask);
+    return mode_t(0666 & ~mask);
+  }();
+  return mode;
+}
+
+/// A copy of `mesh` whose faces are all triangles: CGAL's triangulation, with fans
+/// where it gives up (STL stores triangles only).
+template <class Mesh>
+Mesh triangulated_copy(const Mesh& mesh)
+{
+  Mesh triangles = mesh;
+  if(CGAL::is_triangle_mesh(triangles))
+    return triangles;
+  bool all = false;
+  try {
+    all = CGAL::Polygon_mesh_processing::triangulate_faces(triangles);
+  } catch(const std::exception&) {
+    all = false;
+  }
+  if(!all || !CGAL::Range_space_remeshing::internal::is_triangle_structure(triangles)) {
+    triangles = mesh;
+    CGAL::Range_space_remeshing::internal::fan_triangulate(triangles);
+  }
+  return triangles;
+}
+
+} // namespace internal
+
+/// Removes the temporary files of unfinished writes when the program is interrupted
+/// (SIGINT, SIGTERM, SIGHUP), then dies of the signal as it would have.
+inline void remove_temporary_files_on_signals()
+{
+  internal::pending_files();
+  internal::new_file_mode();
+  for(int s : {SIGINT, SIGTERM, SIGHUP})
+    std::signal(s, internal::remove_pending_files_and_die);
+}
+
+/// How a mesh is written.
+struct Write_options
+{
+  bool binary = true; // PLY and STL; OFF and OBJ are text
+  int precision = 17; // digits of text coordinates: doubles read back exactly
+};
+
+/// Writes `mesh` to `out` in the format of the extension `ext` ("off", "obj", "ply",
+/// "stl"), with the vertex colours `colors` (if not null) where the format stores
+/// them (OFF, PLY); faces are split into triangles for STL. False on a stream error.
+template <class Mesh, class ColorMap>
+bool write_mesh(std::ostream& out, const Mesh& mesh, const std::string& ext, const ColorMap* colors,
+                const Write_options& options)
+{
+  const auto precision = CGAL::parameters::stream_precision(options.precision);
+  const bool binary = options.binary && (ext == "ply" || ext == "stl");
+  CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
+  if(ext == "stl")
+    return CGAL::IO::write_STL(out, internal::triangulated_copy(mesh), precision);
+  if(ext == "obj")
+    return CGAL::IO::write_OBJ(out, mesh, precision);
+  if(ext == "off")
+    return colors ? CGAL::IO::write_OFF(out, mesh, precision.vertex_color_map(*colors))
+                  : CGAL::IO::write_OFF(out, mesh, precision);
+  return colors ? CGAL::IO::write_PLY(out, mesh, "", precision.vertex_color_map(*colors))
+                : CGAL::IO::write_PLY(out, mesh, "", precision);
+}
+
+/// The files a run writes, each first under a temporary name; `commit()` renames
+/// them all into place, the destructor removes those not committed.
+class Output_files
+{
+public:
+  Output_files() = default;
+  Output_files(const Output_files&) = delete;
+  Output_files& operator=(const Output_files&) = delete;
+  ~Output_files() { discard(); }
+
+  /// Writes `mesh` (with the vertex colours `colors`, if not null, where the format
+  /// stores them: OFF and PLY) for `path`, under a temporary name next to it.
+  template <class Mesh, class ColorMap>
+  void add(const Mesh& mesh, const std::string& path, const ColorMap* colors, const Write_options& options)
+  {
+    const std::string ext = extension_of(path);
+    if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
+      throw Write_error("cannot write '" + path + "': unsupported format (use .off .obj .ply .stl)");
+    int slot = -1;
+    internal::Pending_files& pending = internal::pending_files();
+    for(int i = 0; i < internal::Pending_files::capacity && slot < 0; ++i)
+      if(!pending.used[i])
+        slot = i;
+    const auto slash = path.find_last_of('/');
+    // short, whatever the destination's name: a name of 255 bytes stays writable
+    const std::string temporary = (slash == std::string::npos ? "" : path.substr(0, slash + 1)) + ".rsr-XXXXXX";
+    if(slot < 0 || temporary.size() >= internal::Pending_files::path_size)
+      throw Write_error("cannot write '" + path + "': path too long");
+    std::vector<char> name(temporary.begin(), temporary.end());
+    name.push_back('\0');
+    const int fd = ::mkstemp(name.data()); // O_CREAT | O_EXCL: never an existing file or link
+    if(fd < 0)
+      throw Write_error("cannot write '" + path + "': " + std::strerror(errno));
+    std::memcpy(pending.paths[slot], name.data(), name.size());
+    pending.used[slot] = 1;
+    files_.push_back({std::string(name.data()), path, slot});
+    ::fchmod(fd, internal::new_file_mode());
+    bool ok = false;
+    {
+      __gnu_cxx::stdio_filebuf<char> buffer(fd, std::ios::out | std::ios::binary); // closes fd
+      std::ostream out(&buffer);
+      try {
+        ok = write_mesh(out, mesh, ext, colors, options) && out.flush().good();
+      } catch(const std::exception&) {
+        ok = false;
+      }
+      ok = buffer.close() != nullptr && ok;
+    }
+    if(!ok)
+      throw Write_error("cannot write '" + path + "' (disk full or not writable?)");
+  }
+
+  /// Renames every file into place.
+  void commit()
+  {
+    for(File& f : files_) {
+      if(std::rename(f.temporary.c_str(), f.destination.c_str()) != 0)
+        throw Write_error("cannot write '" + f.destination + "': " + std::strerror(errno));
+      internal::pending_files().used[f.slot] = 0;
+      f.temporary.clear();
+    }
+    files_.clear();
+  }
+
+  /// Removes the files not renamed.
+  void discard()
+  {
+    for(File& f : files_)
+      if(!f.temporary.empty()) {
+        internal::pending_files().used[f.slot] = 0;
+        std::remove(f.temporary.c_str());
+      }
+    files_.clear();
+  }
+
+private:
+  struct File
+  {
+    std::string temporary, destination;
+    int slot;
+  };
+
+  std::vector<File> files_;
+};
+
+} // namespace rsr_io
+
+#endif // RANGE_SPACE_REMESHING_EXAMPLES_MESH_FILE_WRITER_H

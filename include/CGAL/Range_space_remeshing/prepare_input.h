@@ -1,0 +1,312 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_PREPARE_INPUT_H
+#define CGAL_RANGE_SPACE_REMESHING_PREPARE_INPUT_H
+
+#include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/internal/Soup_check.h>
+
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
+What `prepare_input()` changed to turn a polygon soup into a triangle mesh the
+remesher accepts. Nothing is dropped or changed without being counted here.
+*/
+struct Input_repair_statistics
+{
+  /// points at the same position as another one, merged into it
+  std::size_t merged_points = 0;
+  /// points no polygon uses, removed in any case (they would count in bounding boxes)
+  std::size_t removed_isolated_points = 0;
+  /// corners repeated one after the other in a polygon, removed
+  std::size_t removed_repeated_corners = 0;
+  /// polygons left with fewer than 3 corners, or passing twice through a point, removed
+  std::size_t removed_degenerate_polygons = 0;
+  /// polygons with the same corners as another one, removed
+  std::size_t removed_duplicate_polygons = 0;
+  /// polygons reversed to orient their connected piece consistently
+  std::size_t reversed_polygons = 0;
+  /// triangles reversed so that a repaired closed surface faces outward
+  std::size_t reversed_to_face_outward = 0;
+  /// edges with more than two polygons (they become borders)
+  std::size_t non_manifold_edges = 0;
+  /// points copied to split a non-manifold vertex into manifold ones
+  std::size_t split_non_manifold_points = 0;
+  /// polygons with more than three corners, split into triangles
+  std::size_t triangulated_polygons = 0;
+
+  /// Whether the input was repaired: changed by more than the removal of unused points
+  /// and the triangulation of polygons, which `Input_repair::REFUSE` does too.
+  bool repaired() const
+  {
+    return merged_points + removed_repeated_corners + removed_degenerate_polygons + removed_duplicate_polygons +
+               reversed_polygons + reversed_to_face_outward + non_manifold_edges + split_non_manifold_points >
+           0;
+  }
+};
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
+How `prepare_input()` treats a soup that is not already an oriented 2-manifold.
+*/
+enum class Input_repair
+{
+  /// Repairs it with CGAL's polygon soup repair and orientation (the default).
+  REPAIR,
+  /// Throws `Remeshing_error` naming the first problem found.
+  REFUSE
+};
+
+namespace internal {
+
+/// Counts what `orient_polygon_soup()` does (CGAL copies its visitor: counters by pointer).
+struct Counting_orientation_visitor : public CGAL::Polygon_mesh_processing::Default_orientation_visitor
+{
+  Input_repair_statistics* statistics;
+  explicit Counting_orientation_visitor(Input_repair_statistics* s) : statistics(s) {}
+  void non_manifold_edge(std::size_t, std::size_t, std::size_t) { ++statistics->non_manifold_edges; }
+  void duplicated_vertex(std::size_t, std::size_t) { ++statistics->split_non_manifold_points; }
+  void polygon_orientation_reversed(std::size_t) { ++statistics->reversed_polygons; }
+};
+
+/// Removes the points no polygon uses, keeping the others in their order.
+template <class PointRange, class PolygonRange>
+void remove_isolated_points(PointRange& points, PolygonRange& polygons, Input_repair_statistics& statistics)
+{
+  std::vector<std::size_t> new_index(points.size(), 0);
+  for(const auto& polygon : polygons)
+    for(std::size_t v : polygon)
+      new_index[v] = 1;
+  std::size_t kept = 0;
+  for(std::size_t v = 0; v < points.size(); ++v)
+    if(new_index[v]) {
+      new_index[v] = kept;
+      points[kept++] = points[v];
+    }
+  statistics.removed_isolated_points += points.size() - kept;
+  if(kept == points.size())
+    return;
+  points.resize(kept);
+  for(auto& polygon : polygons)
+    for(std::size_t& v : polygon)
+      v = new_index[v];
+}
+
+/// Removes the corners equal to the one before them (cyclically), then the polygons
+/// with fewer than 3 corners or a corner twice (pinched: no orientable disk).
+template <class PolygonRange>
+void remove_degenerate_polygons(PolygonRange& polygons, Input_repair_statistics& statistics)
+{
+  std::vector<std::size_t> sorted;
+  auto kept = polygons.begin();
+  for(auto& polygon : polygons) {
+    std::vector<std::size_t> corners;
+    for(std::size_t v : polygon)
+      if(corners.empty() || corners.back() != v)
+        corners.push_back(v);
+    while(corners.size() > 1 && corners.front() == corners.back())
+      corners.pop_back();
+    statistics.removed_repeated_corners += polygon.size() - corners.size();
+    sorted.assign(corners.begin(), corners.end());
+    std::sort(sorted.begin(), sorted.end());
+    if(corners.size() < 3 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()) {
+      ++statistics.removed_degenerate_polygons;
+      continue;
+    }
+    polygon.assign(corners.begin(), corners.end());
+    if(&*kept != &polygon)
+      *kept = std::move(polygon);
+    ++kept;
+  }
+  polygons.erase(kept, polygons.end());
+}
+
+/// The repairs of CGAL's polygon mesh processing, each counted: merge coinciding
+/// points, drop degenerate and duplicate polygons and unused points, orient the
+/// polygons and split the non-manifold vertices and edges.
+template <class PointRange, class PolygonRange>
+void repair_soup(PointRange& points, PolygonRange& polygons, Input_repair_statistics& statistics)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  statistics.merged_points += PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
+  remove_degenerate_polygons(polygons, statistics);
+  statistics.removed_duplicate_polygons += PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
+  remove_isolated_points(points, polygons, statistics);
+  PMP::orient_polygon_soup(points, polygons,
+                           CGAL::parameters::visitor(Counting_orientation_visitor(&statistics)));
+}
+
+/// Splits every face that is not a triangle into a fan: always possible, whatever
+/// the geometry (where the constrained triangulation gives up).
+template <class PolygonMesh>
+void fan_triangulate(PolygonMesh& mesh)
+{
+  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> polygons;
+  for(auto f : faces(mesh))
+    if(degree(f, mesh) > 3)
+      polygons.push_back(f);
+  for(auto f : polygons) {
+    auto h = halfedge(f, mesh);
+    while(degree(face(h, mesh), mesh) > 3)
+      h = prev(CGAL::Euler::split_face(h, next(next(h, mesh), mesh), mesh), mesh);
+  }
+}
+
+/// Whether every face is a triangle whose halfedges point back to it and chain up.
+template <class PolygonMesh>
+bool is_triangle_structure(const PolygonMesh& mesh)
+{
+  for(auto f : faces(mesh)) {
+    const auto h0 = halfedge(f, mesh), h1 = next(h0, mesh), h2 = next(h1, mesh);
+    if(next(h2, mesh) != h0)
+      return false;
+    for(auto h : {h0, h1, h2})
+      if(face(h, mesh) != f || target(h, mesh) != source(next(h, mesh), mesh) ||
+         opposite(opposite(h, mesh), mesh) != h)
+        return false;
+  }
+  return true;
+}
+
+/// Builds `mesh` from the soup, each polygon split into a fan from its first corner.
+template <class PointRange, class PolygonRange, class PolygonMesh>
+void build_from_fans(const PointRange& points, const PolygonRange& polygons, PolygonMesh& mesh)
+{
+  std::vector<std::vector<std::size_t>> triangles;
+  for(const auto& polygon : polygons)
+    for(std::size_t i = 1; i + 1 < polygon.size(); ++i)
+      triangles.push_back({polygon[0], polygon[i], polygon[i + 1]});
+  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(triangles))
+    throw Remeshing_error("a polygon of the input cannot be split into triangles without breaking the mesh");
+  PolygonMesh fans;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, fans);
+  mesh = std::move(fans);
+}
+
+/// The polygons of `mesh` split into triangles: CGAL's triangulation where it
+/// succeeds, fans where it gives up or breaks the structure (degenerate polygons).
+template <class PointRange, class PolygonRange, class PolygonMesh>
+void triangulate_polygons(const PointRange& points, const PolygonRange& polygons, PolygonMesh& mesh)
+{
+  bool all_triangulated = false;
+  try {
+    all_triangulated = CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
+  } catch(const std::exception&) {
+    all_triangulated = false;
+  }
+  if(!all_triangulated)
+    fan_triangulate(mesh);
+  if(!is_triangle_structure(mesh))
+    build_from_fans(points, polygons, mesh);
+}
+
+/// Orients each closed piece of a repaired triangle mesh outward (the repair's
+/// orientation is consistent but arbitrary) and counts the triangles reversed.
+template <class TriangleMesh>
+void orient_outward(TriangleMesh& mesh, Input_repair_statistics& statistics)
+{
+  if(!CGAL::is_closed(mesh))
+    return; // CGAL's orient() needs a closed surface; an open one has no outside
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  std::vector<std::pair<vertex_descriptor, vertex_descriptor>> first_edges;
+  for(auto f : faces(mesh))
+    first_edges.emplace_back(source(halfedge(f, mesh), mesh), target(halfedge(f, mesh), mesh));
+  CGAL::Polygon_mesh_processing::orient(mesh);
+  std::size_t i = 0;
+  for(auto f : faces(mesh)) { // faces keep their descriptors: a reversed one has its edge backwards
+    const auto [u, v] = first_edges[i++];
+    bool kept = false;
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
+      kept = kept || (source(h, mesh) == u && target(h, mesh) == v);
+    statistics.reversed_to_face_outward += !kept;
+  }
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
+Turns a polygon soup, as files give it (STL: every triangle with its own three
+points; scans: a few non-manifold vertices, inconsistent orientation, duplicated or
+degenerate faces, unused points), into the triangle mesh the remesher needs.
+
+A soup that is already an oriented 2-manifold without unused points is copied
+as it is (in its order), after one hash-free check in O(n log n). Otherwise,
+with `Input_repair::REPAIR`, CGAL's repair runs: points at the same position are
+merged, polygons with a repeated corner or fewer than 3 corners and duplicated
+polygons are removed, unused points are removed, the polygons are oriented
+(`CGAL::Polygon_mesh_processing::orient_polygon_soup()`), which splits non-manifold
+vertices and edges. Polygons are then triangulated, and a repaired closed surface is
+oriented outward (`CGAL::Polygon_mesh_processing::orient()`). Every change is counted in the
+returned statistics. Since points are only merged where they coincide or copied,
+every vertex of `mesh` sits at the position of some input point: an attribute of
+the points follows them by position.
+
+\tparam PointRange a `std::vector` of points (the `Point_3` of a CGAL kernel)
+\tparam PolygonRange a `std::vector` of `std::vector<std::size_t>`
+\tparam PolygonMesh a model of `MutableFaceGraph`
+
+\param points the points of the soup; modified by the repair
+\param polygons the polygons of the soup (indices into `points`); modified by the repair
+\param mesh receives the triangle mesh (cleared first)
+\param repair `Input_repair::REFUSE` throws instead of repairing
+
+\throws Remeshing_error if the soup has no polygon, a corner that names no point, a
+NaN or infinite coordinate, or (with `Input_repair::REFUSE`) anything to repair; the
+message names the problem.
+*/
+template <class PointRange, class PolygonRange, class PolygonMesh>
+Input_repair_statistics prepare_input(PointRange& points, PolygonRange& polygons, PolygonMesh& mesh,
+                                      Input_repair repair = Input_repair::REPAIR)
+{
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  Input_repair_statistics statistics;
+  internal::check_soup_values(points, polygons);
+  internal::remove_isolated_points(points, polygons, statistics); // never repaired away: unused
+  const std::string problem = internal::soup_problem(points, polygons);
+  if(!problem.empty()) {
+    if(repair == Input_repair::REFUSE)
+      throw Remeshing_error("the input is not an oriented 2-manifold mesh: " + problem);
+    internal::repair_soup(points, polygons, statistics);
+    if(polygons.empty())
+      throw Remeshing_error("the input has no face left after removing its degenerate faces");
+    if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
+      throw Remeshing_error("the input could not be repaired into a 2-manifold mesh");
+  }
+  clear(mesh);
+  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  for(const auto& polygon : polygons)
+    statistics.triangulated_polygons += (polygon.size() > 3);
+  if(statistics.triangulated_polygons > 0)
+    internal::triangulate_polygons(points, polygons, mesh);
+  if(!problem.empty())
+    internal::orient_outward(mesh, statistics);
+  return statistics;
+}
+
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_PREPARE_INPUT_H

@@ -1,0 +1,336 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+//
+// The command-line program's files: its reader (mesh_file_reader.h) on every format
+// and on count bombs, prepare_input()'s repairs, and its writer (mesh_file_writer.h)
+// read back through CGAL's readers (another code path): counts, area, closedness and
+// colours for OFF, OBJ, PLY and STL, text and binary.
+
+#include "test_support.h"
+
+#include "mesh_file_reader.h"
+#include "mesh_file_writer.h"
+
+#include <CGAL/Range_space_remeshing/prepare_input.h>
+#include <CGAL/Range_space_remeshing/remesh.h>
+
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace test;
+namespace PMP = CGAL::Polygon_mesh_processing;
+using Color_map = Mesh::Property_map<Mesh::Vertex_index, CGAL::IO::Color>;
+
+rsr_io::Polygon_soup parse(const std::string& text, const std::string& ext)
+{
+  return rsr_io::internal::parse_mesh(text, ext, "test");
+}
+
+bool refuses(const std::string& text, const std::string& ext)
+{
+  try {
+    parse(text, ext);
+  } catch(const rsr_io::Read_error&) {
+    return true;
+  }
+  return false;
+}
+
+/// The bytes the soup takes in memory, allocations included (16 bytes of header each).
+std::size_t footprint(const rsr_io::Polygon_soup& soup)
+{
+  std::size_t bytes = soup.points.capacity() * sizeof(soup.points[0]) + soup.colors.capacity() * 3 +
+                      soup.polygons.capacity() * sizeof(soup.polygons[0]);
+  for(const auto& polygon : soup.polygons)
+    bytes += polygon.capacity() ? polygon.capacity() * sizeof(std::size_t) + 16 : 0;
+  return bytes;
+}
+
+std::string octahedron_off()
+{
+  return "OFF\n6 8 0\n1 0 0\n-1 0 0\n0 1 0\n0 -1 0\n0 0 1\n0 0 -1\n"
+         "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n";
+}
+
+// ----------------------------------------------------------------- reader
+
+void test_formats_agree()
+{
+  const auto off = parse(octahedron_off(), "off");
+  CHECK_EQ(off.points.size(), std::size_t(6));
+  CHECK_EQ(off.polygons.size(), std::size_t(8));
+  std::string obj = "# octahedron\no thing\n";
+  for(const auto& p : off.points)
+    obj += "v " + std::to_string(p[0]) + " " + std::to_string(p[1]) + " " + std::to_string(p[2]) + "\n";
+  obj += "vt 0 0\nvn 0 0 1\ng group\nusemtl stuff\ns 1\n";
+  for(const auto& f : off.polygons) // every corner form: i, i/t, i//n, i/t/n, negative
+    obj += "f " + std::to_string(f[0] + 1) + " " + std::to_string(f[1] + 1) + "/1 " +
+           std::to_string(int(f[2]) - 6) + "/1/1\n";
+  const auto from_obj = parse(obj, "obj");
+  CHECK(from_obj.points == off.points);
+  CHECK(from_obj.polygons == off.polygons);
+
+  // big-endian binary PLY: doubles and int indices, an extra element in between
+  std::string ply = "ply\nformat binary_big_endian 1.0\nelement vertex 6\nproperty double x\nproperty double y\n"
+                    "property double z\nelement edge 1\nproperty int vertex1\nproperty int vertex2\n"
+                    "element face 8\nproperty list uchar int vertex_indices\nend_header\n";
+  auto put = [&ply](const void* bytes, std::size_t n) {
+    const char* b = static_cast<const char*>(bytes);
+    for(std::size_t i = n; i-- > 0;)
+      ply.push_back(b[i]);
+  };
+  for(const auto& p : off.points)
+    for(double x : p)
+      put(&x, 8);
+  for(std::int32_t v : {0, 1})
+    put(&v, 4);
+  for(const auto& f : off.polygons) {
+    ply.push_back(char(3));
+    for(std::size_t v : f) {
+      const std::int32_t i = std::int32_t(v);
+      put(&i, 4);
+    }
+  }
+  const auto from_ply = parse(ply, "ply");
+  CHECK(from_ply.points == off.points);
+  CHECK(from_ply.polygons == off.polygons);
+
+  // COFF with integer colours, comments and a header split over lines
+  const auto coff = parse("COFF # coloured\n3\n1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n"
+                          "3 0 1 2\n",
+                          "off");
+  CHECK_EQ(coff.colors.size(), std::size_t(3));
+  CHECK(coff.colors.size() == 3 && coff.colors[1][1] == 255 && coff.colors[1][0] == 0);
+  // float colours in a PLY: 0.5 is 128
+  const auto colored = parse("ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nproperty float red\nproperty float green\nproperty float blue\n"
+                             "element face 1\nproperty list uchar uint vertex_indices\nend_header\n"
+                             "0 0 0 1 0 0.5\n1 0 0 0 1 0\n0 1 0 0 0 1\n3 0 1 2\n",
+                             "ply");
+  CHECK(colored.colors.size() == 3 && colored.colors[0][0] == 255 && colored.colors[0][2] == 128);
+  // ascii and binary STL: every triangle with its own points
+  const auto stl = parse("solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 0 1 0\n"
+                         "endloop\nendfacet\nendsolid x\n",
+                         "stl");
+  CHECK(stl.points.size() == 3 && stl.polygons.size() == 1);
+  std::string binary_stl(80, ' ');
+  const std::uint32_t one = 1;
+  binary_stl.append(reinterpret_cast<const char*>(&one), 4);
+  const float triangle[12] = {0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0};
+  binary_stl.append(reinterpret_cast<const char*>(triangle), 48);
+  binary_stl.append(2, '\0');
+  const auto from_binary = parse(binary_stl, "stl");
+  CHECK(from_binary.points.size() == 3 && from_binary.polygons.size() == 1 && from_binary.points[1][0] == 1);
+}
+
+void test_bombs_are_refused_before_allocation()
+{
+  const std::string vertices3 = "element vertex 3\nproperty float x\nproperty float y\nproperty float z\n";
+  CHECK(refuses("ply\nformat ascii 1.0\n" + vertices3 +
+                    "element face 1\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n"
+                    "1000000000 1 2 3\n",
+                "ply"));
+  std::string binary = "ply\nformat binary_little_endian 1.0\n" + vertices3 +
+                       "element face 1\nproperty list int int vertex_indices\nend_header\n";
+  binary.append(36, '\0');
+  const std::int32_t huge = 1000000000;
+  binary.append(reinterpret_cast<const char*>(&huge), 4);
+  binary.append(12, '\0');
+  CHECK(refuses(binary, "ply"));
+  CHECK(refuses("ply\nformat ascii 1.0\nelement vertex 99999999999\nproperty float x\nend_header\n1\n", "ply"));
+  CHECK(refuses("ply\nformat ascii 1.0\nelement vertex -3\nproperty float x\nend_header\n", "ply"));
+  CHECK(refuses("ply\nformat ascii 1.0\nproperty float x\nelement vertex 1\nend_header\n1\n", "ply"));
+  CHECK(refuses("OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n", "off"));
+  CHECK(refuses("OFF\n1e9 1 0\n", "off"));
+  CHECK(refuses("OFF\n300000000 1 0\n0 0 0\n", "off"));
+  std::string stl(80, ' ');
+  const std::uint32_t count = 4000000000u;
+  stl.append(reinterpret_cast<const char*>(&count), 4);
+  stl.append(100, '\0');
+  CHECK(refuses(stl, "stl"));
+  CHECK(refuses("f 1 2 3\n", "obj"));
+  CHECK(refuses("v 0 0 0\nf 1 0 1\n", "obj"));
+  CHECK(refuses("", "off"));
+  CHECK(refuses(std::string("OFF\n3 1 0\n0 0 0\n1 0 \0 0\n0 1 0\n3 0 1 2\n", 34), "off"));
+
+  // the most a file's bytes can become: one-byte counts and indices of a binary PLY
+  std::string faces = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty uchar x\n"
+                      "property uchar y\nproperty uchar z\nelement face 20000\n"
+                      "property list uchar uchar vertex_indices\nend_header\n";
+  faces.append("\0\0\0\1\0\0\0\1\0", 9);
+  for(int f = 0; f < 20000; ++f)
+    faces.append("\3\0\1\2", 4);
+  const auto soup = parse(faces, "ply");
+  CHECK_EQ(soup.polygons.size(), std::size_t(20000));
+  std::cout << "binary PLY of one-byte faces: " << footprint(soup) << " bytes in memory for " << faces.size()
+            << " in the file" << std::endl;
+  CHECK(double(footprint(soup)) <= rsr_io::kMaximum_bytes_per_file_byte * double(faces.size()));
+}
+
+// ----------------------------------------------------------------- repair
+
+void test_repairs_are_counted()
+{
+  // an STL soup of the octahedron: 24 points for 6
+  auto off = parse(octahedron_off(), "off");
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  for(const auto& f : off.polygons) {
+    polygons.push_back({});
+    for(std::size_t v : f) {
+      polygons.back().push_back(points.size());
+      points.emplace_back(off.points[v][0], off.points[v][1], off.points[v][2]);
+    }
+  }
+  Mesh mesh;
+  auto soup_points = points;
+  auto soup_polygons = polygons;
+  bool refused = false;
+  try {
+    RSR::prepare_input(soup_points, soup_polygons, mesh, RSR::Input_repair::REFUSE);
+  } catch(const RSR::Remeshing_error&) {
+    refused = true;
+  }
+  CHECK(refused);
+  auto repairs = RSR::prepare_input(points, polygons, mesh);
+  CHECK_EQ(repairs.merged_points, std::size_t(18));
+  CHECK(repairs.repaired());
+  CHECK_EQ(num_vertices(mesh), std::size_t(6));
+  CHECK(CGAL::is_closed(mesh) && CGAL::is_valid_polygon_mesh(mesh));
+
+  // two faces flipped, one duplicated, one degenerate, one unused point
+  std::vector<Point> p2;
+  for(const auto& p : off.points)
+    p2.emplace_back(p[0], p[1], p[2]);
+  p2.emplace_back(5, 5, 5);
+  std::vector<std::vector<std::size_t>> f2 = off.polygons;
+  std::reverse(f2[0].begin(), f2[0].end());
+  std::reverse(f2[5].begin(), f2[5].end());
+  f2.push_back(f2[3]);
+  f2.push_back({0, 0, 1});
+  Mesh m2;
+  repairs = RSR::prepare_input(p2, f2, m2);
+  CHECK_EQ(repairs.removed_isolated_points, std::size_t(1));
+  CHECK_EQ(repairs.removed_duplicate_polygons, std::size_t(1));
+  CHECK_EQ(repairs.removed_degenerate_polygons, std::size_t(1));
+  // orient_polygon_soup() keeps the first polygon's orientation, then the surface is
+  // turned outward: 2 flipped in the end, whichever way the first step went
+  CHECK((repairs.reversed_polygons == 2 && repairs.reversed_to_face_outward == 0) ||
+        (repairs.reversed_polygons == 6 && repairs.reversed_to_face_outward == 8));
+  CHECK(CGAL::is_closed(m2) && num_faces(m2) == 8);
+  CHECK(CGAL::Polygon_mesh_processing::is_outward_oriented(m2));
+
+  // a clean soup with an unused point: only the point goes, in either mode, and the
+  // other points keep their order
+  std::vector<Point> p3 = {Point(9, 9, 9), Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0)};
+  std::vector<std::vector<std::size_t>> f3 = {{1, 2, 3}};
+  Mesh m3;
+  repairs = RSR::prepare_input(p3, f3, m3, RSR::Input_repair::REFUSE);
+  CHECK(!repairs.repaired() && repairs.removed_isolated_points == 1);
+  CHECK(num_vertices(m3) == 3 && m3.point(*vertices(m3).begin()) == Point(0, 0, 0));
+}
+
+// ----------------------------------------------------------------- writer
+
+double triangulated_area(const Mesh& mesh) { return PMP::area(rsr_io::internal::triangulated_copy(mesh)); }
+
+void test_written_files_read_back()
+{
+  Mesh sphere = make_sphere(1.0, 3), quads;
+  auto in_colors = sphere.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+  for(auto v : vertices(sphere))
+    in_colors[v] = sphere.point(v).z() > 0 ? CGAL::IO::Color(255, 0, 0) : CGAL::IO::Color(0, 0, 255);
+  auto out_colors = quads.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+  RSR::remesh(sphere, quads, CGAL::parameters::grid_spacing(0.2).vertex_color_map(in_colors),
+              CGAL::parameters::vertex_color_map(out_colors));
+  std::size_t quad_count = 0;
+  for(auto f : faces(quads))
+    quad_count += degree(f, quads) == 4;
+  CHECK(quad_count > 100 && CGAL::is_closed(quads));
+  const double area = triangulated_area(quads);
+
+  struct Case
+  {
+    const char* name;
+    bool binary;
+  };
+  for(const Case c : {Case{"out.off", false}, Case{"out.obj", false}, Case{"out.ply", false}, Case{"outb.ply", true},
+                      Case{"out.stl", false}, Case{"outb.stl", true}}) {
+    const std::string path = c.name;
+    const std::string ext = rsr_io::extension_of(path);
+    std::remove(path.c_str());
+    {
+      rsr_io::Output_files files;
+      files.add(quads, path, &out_colors, rsr_io::Write_options{c.binary, 17});
+      files.commit();
+    }
+    Mesh back;
+    auto back_colors = back.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+    bool read = false;
+    if(ext == "ply") {
+      std::ifstream in(path, std::ios::binary);
+      read = CGAL::IO::read_PLY(in, back); // fills "v:color"
+    } else if(ext == "off") {
+      read = CGAL::IO::read_OFF(path, back, CGAL::parameters::vertex_color_map(back_colors));
+    } else {
+      read = CGAL::IO::read_polygon_mesh(path, back);
+    }
+    CHECK(read);
+    std::cout << path << ": " << num_vertices(back) << " vertices, " << num_faces(back) << " faces" << std::endl;
+    CHECK_EQ(num_vertices(back), num_vertices(quads));
+    CHECK(CGAL::is_closed(back));
+    if(ext == "stl") { // triangles: two per quad, the area of the quads split the same way
+      CHECK_EQ(num_faces(back), 2 * num_faces(quads));
+      CHECK(std::abs(PMP::area(back) - area) <= (c.binary ? 1e-6 : 1e-9) * area); // binary: floats
+    } else {
+      CHECK_EQ(num_faces(back), num_faces(quads));
+      CHECK(std::abs(triangulated_area(back) - area) <= 1e-9 * area);
+    }
+    if(ext == "ply" || ext == "off") { // the colours, vertex by vertex (same order)
+      std::size_t same = 0;
+      auto v = vertices(back).begin();
+      for(auto u : vertices(quads))
+        same += back_colors[*v++] == out_colors[u];
+      CHECK_EQ(same, num_vertices(quads));
+    }
+    std::remove(path.c_str());
+  }
+
+  // a file that cannot be written leaves nothing behind and touches nothing
+  {
+    std::ofstream("keep.off") << "original";
+    bool failed = false;
+    try {
+      rsr_io::Output_files files;
+      files.add(quads, "keep.off", &out_colors, rsr_io::Write_options{});
+      files.add(quads, "no/such/directory/x.off", &out_colors, rsr_io::Write_options{});
+      files.commit();
+    } catch(const rsr_io::Write_error&) {
+      failed = true;
+    }
+    CHECK(failed);
+    std::ifstream in("keep.off");
+    std::string content;
+    in >> content;
+    CHECK(content == "original");
+  }
+}
+
+} // namespace
+
+int main()
+{
+  test_formats_agree();
+  test_bombs_are_refused_before_allocation();
+  test_repairs_are_counted();
+  test_written_files_read_back();
+  return report("test_file_io");
+}
