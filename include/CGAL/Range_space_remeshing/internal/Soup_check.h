@@ -74,16 +74,18 @@ std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
   for(std::size_t f = 0; f < polygons.size(); ++f)
     first[f + 1] = first[f] + polygons[f].size();
   point_of.reserve(first.back());
-  std::vector<char> used(points.size(), 0);
-  for(const auto& polygon : polygons) {
-    if(polygon.size() < 3)
+  std::vector<std::size_t> last_polygon(points.size(), std::size_t(-1)); // the last polygon using a point
+  for(std::size_t f = 0; f < polygons.size(); ++f) {
+    if(polygons[f].size() < 3)
       return "a face has fewer than 3 corners";
-    for(std::size_t v : polygon) {
+    for(std::size_t v : polygons[f]) {
+      if(last_polygon[v] == f)
+        return "a face passes twice through the same vertex";
+      last_polygon[v] = f;
       point_of.push_back(v);
-      used[v] = 1;
     }
   }
-  if(std::find(used.begin(), used.end(), 0) != used.end())
+  if(std::find(last_polygon.begin(), last_polygon.end(), std::size_t(-1)) != last_polygon.end())
     return "a vertex is used by no face";
 
   std::vector<std::size_t> by_position(points.size());
@@ -105,8 +107,6 @@ std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
       edges.push_back({point_of[c], point_of[next_corner(f, c)], c});
   std::sort(edges.begin(), edges.end());
   for(std::size_t i = 0; i < edges.size(); ++i) {
-    if(edges[i].from == edges[i].to)
-      return "a face has the same vertex twice in a row";
     if(i > 0 && !(edges[i - 1] < edges[i]))
       return "an edge is used twice in the same direction (inconsistent orientation or non-manifold edge)";
   }
