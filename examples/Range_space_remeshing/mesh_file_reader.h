@@ -3,8 +3,8 @@
 //
 // The command-line program's reader: OFF (with C, N, ST, 4 and n prefixes), PLY
 // (ascii, binary little and big endian, any element order and property types),
-// OBJ and STL (ascii and binary) into a polygon soup with its vertex colours, in
-// one pass over the file mapped in memory.
+// OBJ and STL (ascii and binary; the corners at one position joined) into a polygon
+// soup with its vertex colours, in one pass over the file mapped in memory.
 //
 // Why hand-written, where CGAL and Debian have readers: CGAL 5.5's readers crash on
 // legal PLY files (a face element before the vertex element, float colours), read
@@ -30,6 +30,7 @@
 #include <stdexcept>
 #include <string>
 #include <string_view>
+#include <unordered_map>
 #include <vector>
 
 #include <fcntl.h>
@@ -654,8 +655,9 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name)
 
 // ------------------------------------------------------------------------ STL
 
-/// Whether an STL file is binary: its size is that of its triangle count, or it
-/// does not start with "solid" (some binary files do: the size decides first).
+/// Whether an STL file is binary: its size is that of its triangle count (some binary
+/// files start with "solid" too), or its start is not text with STL's keywords (some
+/// exporters write "beginsolid" or nothing before the first facet).
 inline bool is_binary_stl(std::string_view text)
 {
   if(text.size() >= 84) {
@@ -664,16 +666,50 @@ inline bool is_binary_stl(std::string_view text)
     if(84 + 50 * std::uint64_t(count) == text.size())
       return true;
   }
+  const std::string_view start = text.substr(0, 1024);
+  if(start.find('\0') != std::string_view::npos)
+    return true;
   Text_cursor in(text);
-  return in.word() != "solid";
+  const std::string_view first = in.word();
+  return first.find("solid") == std::string_view::npos && first != "facet" &&
+         start.find("vertex") == std::string_view::npos;
 }
 
-/// Every triangle with its own three points, as STL stores them (the repair merges
-/// the points that coincide).
+/// The index of each distinct position: STL gives every triangle its own three points,
+/// and, as every STL reader does, the points at the same position are one vertex.
+class Stl_vertices
+{
+public:
+  explicit Stl_vertices(std::vector<std::array<double, 3>>& points) : points_(points) {}
+  std::size_t index_of(const std::array<double, 3>& p)
+  {
+    const auto [it, added] = index_.emplace(p, points_.size());
+    if(added)
+      points_.push_back(p);
+    return it->second;
+  }
+
+private:
+  struct Hash
+  {
+    std::size_t operator()(const std::array<double, 3>& p) const
+    {
+      std::size_t h = 0;
+      for(double x : p)
+        h = h * 0x9E3779B97F4A7C15ull ^ std::hash<double>()(x);
+      return h;
+    }
+  };
+  std::vector<std::array<double, 3>>& points_;
+  std::unordered_map<std::array<double, 3>, std::size_t, Hash> index_;
+};
+
+/// The triangles of an STL file, their corners at the same position joined.
 inline Polygon_soup read_stl(std::string_view text, const std::string& name)
 {
   auto fail = [&](const std::string& what) -> void { throw Read_error(name + ": " + what); };
   Polygon_soup soup;
+  Stl_vertices vertices(soup.points);
   if(is_binary_stl(text)) {
     if(text.size() < 84)
       fail("not an STL file (too short for a binary STL, and no 'solid' keyword)");
@@ -681,7 +717,6 @@ inline Polygon_soup read_stl(std::string_view text, const std::string& name)
     std::memcpy(&count, text.data() + 80, 4); // STL is little endian, as the hosts we build for
     if(84 + 50 * std::uint64_t(count) > text.size())
       fail("its binary STL triangle count (" + std::to_string(count) + ") is larger than the file");
-    soup.points.reserve(3 * std::size_t(count));
     soup.polygons.reserve(count);
     for(std::uint32_t t = 0; t < count; ++t) {
       const char* record = text.data() + 84 + 50 * std::size_t(t) + 12; // after the normal
@@ -689,8 +724,7 @@ inline Polygon_soup read_stl(std::string_view text, const std::string& name)
       for(int c = 0; c < 3; ++c) {
         float xyz[3];
         std::memcpy(xyz, record + 12 * c, 12);
-        triangle.push_back(soup.points.size());
-        soup.points.push_back({{double(xyz[0]), double(xyz[1]), double(xyz[2])}});
+        triangle.push_back(vertices.index_of({{double(xyz[0]), double(xyz[1]), double(xyz[2])}}));
       }
       soup.polygons.push_back(std::move(triangle));
     }
@@ -706,8 +740,7 @@ inline Polygon_soup read_stl(std::string_view text, const std::string& name)
           fail("an STL vertex has a coordinate that is not a number");
       if(loop.size() >= 3)
         fail("an STL facet has more than 3 vertices");
-      loop.push_back(soup.points.size());
-      soup.points.push_back(p);
+      loop.push_back(vertices.index_of(p));
     } else if(w == "endloop" || w == "endfacet") {
       if(!loop.empty())
         soup.polygons.push_back(std::move(loop));

@@ -22,6 +22,8 @@
 #include <CGAL/boost/graph/IO/STL.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <algorithm>
+#include <array>
 #include <csignal>
 #include <cstdio>
 #include <cstring>
@@ -103,6 +105,25 @@ Mesh triangulated_copy(const Mesh& mesh)
   return triangles;
 }
 
+/// How many vertices of `mesh` sit where another one does once written to STL (as
+/// floats in binary, as doubles in text): STL stores positions only, so a reader
+/// would join them, and the file would not be the same surface.
+template <class Mesh>
+std::size_t vertices_joined_by_stl(const Mesh& mesh, bool binary)
+{
+  std::vector<std::array<double, 3>> positions;
+  for(auto v : vertices(mesh)) {
+    const auto& p = get(CGAL::vertex_point, mesh, v);
+    std::array<double, 3> x{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+    if(binary)
+      for(double& c : x)
+        c = double(float(c));
+    positions.push_back(x);
+  }
+  std::sort(positions.begin(), positions.end());
+  return std::size_t(positions.end() - std::unique(positions.begin(), positions.end()));
+}
+
 } // namespace internal
 
 /// Removes the temporary files of unfinished writes when the program is interrupted
@@ -161,6 +182,11 @@ public:
     const std::string ext = extension_of(path);
     if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
       throw Write_error("cannot write '" + path + "': unsupported format (use .off .obj .ply .stl)");
+    if(ext == "stl")
+      if(const std::size_t joined = internal::vertices_joined_by_stl(mesh, options.binary))
+        throw Write_error("cannot write '" + path + "': " + std::to_string(joined) + " vertices of the mesh " +
+                          "would coincide with others in STL, which stores positions only" +
+                          (options.binary ? " (as floats)" : "") + "; write .off, .ply or .obj");
     int slot = -1;
     internal::Pending_files& pending = internal::pending_files();
     for(int i = 0; i < internal::Pending_files::capacity && slot < 0; ++i)

@@ -139,6 +139,7 @@ const char* usage =
     "  --strict              refuse an input that needs repairs instead of repairing it\n"
     "  --ascii               write PLY and STL as text (default: binary)\n"
     "  --help                print this help and exit\n"
+    "  --                    ends the options: INPUT and OUTPUT may start with '-'\n"
     "\n"
     "exit status: 0 on success, 2 on bad arguments or unusable input.\n";
 
@@ -272,6 +273,9 @@ Options parse_arguments(int argc, char** argv)
       options.strict = true;
     } else if(arg == "--ascii") {
       options.binary = false;
+    } else if(arg == "--") { // what follows are file names, even if they start with '-'
+      positional.insert(positional.end(), argv + a + 1, argv + argc);
+      break;
     } else if(!arg.empty() && arg[0] == '-' && arg != "-") {
       fail("unknown option '" + arg + "' (see --help)");
     } else {
@@ -297,6 +301,11 @@ bool is_supported_format(const std::string& path)
 /// of a lateral step at the target's distance.
 RSR::Camera read_camera(const std::string& path, double& depth_weight)
 {
+  // a few lines of text: refuse what is not a small regular file (/dev/zero would
+  // be one endless line)
+  std::error_code error;
+  if(!std::filesystem::is_regular_file(path, error) || std::filesystem::file_size(path, error) > 65536 || error)
+    fail("cannot read the camera file '" + path + "' (not a regular file of at most 64 KB)");
   std::ifstream in(path);
   if(!in)
     fail("cannot read the camera file '" + path + "'");
@@ -911,9 +920,9 @@ int main(int argc, char** argv)
     double h = options.cell_size;
     if(!options.absolute) {
       const CGAL::Bbox_3 box = PMP::bbox(input);
-      const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) +
-                                        CGAL::square(box.ymax() - box.ymin()) +
-                                        CGAL::square(box.zmax() - box.zmin()));
+      // hypot: neither overflow nor underflow for coordinates near 1e300 or 1e-300
+      const double diagonal =
+          std::hypot(std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin()), box.zmax() - box.zmin());
       if(!(diagonal > 0))
         fail("the input's bounding box is a single point");
       h *= diagonal;

@@ -304,6 +304,28 @@ void test_written_files_read_back()
     std::remove(path.c_str());
   }
 
+  // two vertices at one position: STL, which stores positions only, would join them
+  {
+    Mesh two;
+    const auto a = two.add_vertex(Point(0, 0, 0)), b = two.add_vertex(Point(1, 0, 0)),
+               c = two.add_vertex(Point(0, 1, 0)), d = two.add_vertex(Point(0, 0, 0)),
+               e = two.add_vertex(Point(-1, 0, 0)), f = two.add_vertex(Point(0, -1, 0));
+    two.add_face(a, b, c);
+    two.add_face(d, e, f);
+    for(const bool binary : {false, true}) {
+      bool refused = false;
+      try {
+        rsr_io::Output_files files;
+        files.add(two, "joined.stl", static_cast<const Color_map*>(nullptr), rsr_io::Write_options{binary, 17});
+        files.commit();
+      } catch(const rsr_io::Write_error&) {
+        refused = true;
+      }
+      CHECK(refused);
+      CHECK(!std::ifstream("joined.stl"));
+    }
+  }
+
   // a file that cannot be written leaves nothing behind and touches nothing
   {
     std::ofstream("keep.off") << "original";

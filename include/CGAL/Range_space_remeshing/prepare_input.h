@@ -189,6 +189,12 @@ bool is_triangle_structure(const PolygonMesh& mesh)
   return true;
 }
 
+/// Polygons of more corners than this are split into fans from their first corner:
+/// CGAL's triangulation falls back, on a polygon whose projection is not simple, to
+/// hole filling, whose time grows as the cube of the corners (a cone's base of 300,000
+/// corners did not end in minutes).
+constexpr std::size_t largest_polygon_triangulated = 1000;
+
 /// Builds `mesh` from the soup, each polygon split into a fan from its first corner.
 template <class PointRange, class PolygonRange, class PolygonMesh>
 void build_from_fans(const PointRange& points, const PolygonRange& polygons, PolygonMesh& mesh)
@@ -209,16 +215,31 @@ void build_from_fans(const PointRange& points, const PolygonRange& polygons, Pol
 template <class PointRange, class PolygonRange, class PolygonMesh>
 void triangulate_polygons(const PointRange& points, const PolygonRange& polygons, PolygonMesh& mesh)
 {
-  bool all_triangulated = false;
+  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> polygons_to_triangulate;
+  for(auto f : faces(mesh))
+    if(degree(f, mesh) > 3 && degree(f, mesh) <= largest_polygon_triangulated)
+      polygons_to_triangulate.push_back(f);
   try {
-    all_triangulated = CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
+    CGAL::Polygon_mesh_processing::triangulate_faces(polygons_to_triangulate, mesh);
   } catch(const std::exception&) {
-    all_triangulated = false;
+    // left to the fans below
   }
-  if(!all_triangulated)
-    fan_triangulate(mesh);
+  fan_triangulate(mesh); // what is left: the largest polygons, those CGAL gave up on
   if(!is_triangle_structure(mesh))
     build_from_fans(points, polygons, mesh);
+}
+
+/// Whether some triangle of `mesh` has corners that are not on one line (exactly).
+template <class TriangleMesh>
+bool has_a_non_degenerate_face(const TriangleMesh& mesh)
+{
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  for(auto f : faces(mesh)) {
+    const auto h = halfedge(f, mesh);
+    if(!CGAL::collinear(get(vpm, source(h, mesh)), get(vpm, target(h, mesh)), get(vpm, target(next(h, mesh), mesh))))
+      return true;
+  }
+  return false;
 }
 
 /// Orients each closed piece of a repaired triangle mesh outward (the repair's
@@ -274,7 +295,7 @@ the points follows them by position.
 \param repair `Input_repair::REFUSE` throws instead of repairing
 
 \throws Remeshing_error if the soup has no polygon, a corner that names no point, a
-NaN or infinite coordinate, or (with `Input_repair::REFUSE`) anything to repair; the
+NaN or infinite coordinate, no area (every triangle with its corners on one line), or (with `Input_repair::REFUSE`) anything to repair; the
 message names the problem.
 */
 template <class PointRange, class PolygonRange, class PolygonMesh>
@@ -303,6 +324,8 @@ Input_repair_statistics prepare_input(PointRange& points, PolygonRange& polygons
     internal::triangulate_polygons(points, polygons, mesh);
   if(!problem.empty())
     internal::orient_outward(mesh, statistics);
+  if(!internal::has_a_non_degenerate_face(mesh))
+    throw Remeshing_error("the input has no area: every face is degenerate (its corners on one line)");
   return statistics;
 }
 

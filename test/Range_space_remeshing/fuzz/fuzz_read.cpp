@@ -13,6 +13,7 @@
 // replays files (its seed corpus and regressions) as a ctest.
 
 #include "mesh_file_reader.h"
+#include "replay_files.h"
 #include "mesh_file_writer.h"
 
 #include <CGAL/Range_space_remeshing/prepare_input.h>
@@ -113,19 +114,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 }
 
 #ifndef RSR_LIBFUZZER
-// Replays the files given on the command line (the seed corpus, the regressions).
 int main(int argc, char** argv)
 {
-  for(int i = 1; i < argc; ++i) {
-    std::ifstream in(argv[i], std::ios::binary);
-    if(!in) {
-      std::cerr << "fuzz_read: cannot read " << argv[i] << std::endl;
-      return 2;
-    }
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    run_one(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
-  }
-  std::cout << "fuzz_read: replayed " << argc - 1 << " inputs" << std::endl;
-  return 0;
+  return replay_files(argc, argv, "fuzz_read", run_one);
 }
 #endif

@@ -19,6 +19,7 @@
 
 #include "../test_support.h"
 #include "mesh_file_reader.h"
+#include "replay_files.h"
 
 #include <CGAL/Range_space_remeshing/prepare_input.h>
 
@@ -168,19 +169,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
 }
 
 #ifndef RSR_LIBFUZZER
-// Replays the files given on the command line (the seed corpus, the regressions).
 int main(int argc, char** argv)
 {
-  for(int i = 1; i < argc; ++i) {
-    std::ifstream in(argv[i], std::ios::binary);
-    if(!in) {
-      std::cerr << "fuzz_remesh: cannot read " << argv[i] << std::endl;
-      return 2;
-    }
-    const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    run_one(reinterpret_cast<const std::uint8_t*>(bytes.data()), bytes.size());
-  }
-  std::cout << "fuzz_remesh: replayed " << argc - 1 << " inputs" << std::endl;
+  if(const int status = replay_files(argc, argv, "fuzz_remesh", run_one))
+    return status;
   return report("fuzz_remesh");
 }
 #endif

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <numeric>
 #include <string>
 #include <tuple>
@@ -57,11 +58,14 @@ private:
   std::vector<std::size_t> parent_;
 };
 
-/// One corner of a polygon: its point, the next corner's point, and where it is.
-struct Directed_edge
+/// An edge of a polygon: its points in increasing order in one key (the high 32 bits
+/// the lower point), the corner it starts at, and whether it goes up.
+struct Polygon_edge
 {
-  std::size_t from, to, corner;
-  bool operator<(const Directed_edge& e) const { return std::tie(from, to) < std::tie(e.from, e.to); }
+  std::uint64_t key;
+  std::uint32_t corner;
+  bool forward;
+  bool operator<(const Polygon_edge& e) const { return key < e.key; }
 };
 
 /// What keeps the soup from being an oriented 2-manifold mesh without unused or
@@ -69,21 +73,21 @@ struct Directed_edge
 template <class PointRange, class PolygonRange>
 std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
 {
-  // corners: numbered polygon by polygon; first[f] is polygon f's first corner
-  std::vector<std::size_t> first(polygons.size() + 1, 0), point_of;
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    first[f + 1] = first[f] + polygons[f].size();
-  point_of.reserve(first.back());
+  // corners, numbered polygon by polygon: their point and the next corner
+  std::vector<std::size_t> point_of, next_of;
   std::vector<std::size_t> last_polygon(points.size(), std::size_t(-1)); // the last polygon using a point
   for(std::size_t f = 0; f < polygons.size(); ++f) {
     if(polygons[f].size() < 3)
       return "a face has fewer than 3 corners";
+    const std::size_t first = point_of.size();
     for(std::size_t v : polygons[f]) {
       if(last_polygon[v] == f)
         return "a face passes twice through the same vertex";
       last_polygon[v] = f;
+      next_of.push_back(point_of.size() + 1);
       point_of.push_back(v);
     }
+    next_of.back() = first;
   }
   if(std::find(last_polygon.begin(), last_polygon.end(), std::size_t(-1)) != last_polygon.end())
     return "a vertex is used by no face";
@@ -99,32 +103,35 @@ std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
     if(!less(by_position[i - 1], by_position[i]))
       return "two vertices are at the same position";
 
-  auto next_corner = [&](std::size_t f, std::size_t c) { return c + 1 < first[f + 1] ? c + 1 : first[f]; };
-  std::vector<Directed_edge> edges;
+  // Sorted by their points, the edges of the polygons come in groups: one polygon
+  // (a border edge) or two going opposite ways (an inner edge). Across an inner
+  // edge a->b / b->a, the corners at a are neighbours around a, and those at b
+  // around b; a manifold vertex has all its corners in one such fan.
+  if(point_of.size() >= (std::size_t(1) << 32))
+    throw Remeshing_error("the input has more than 2^32 face corners");
+  std::vector<Polygon_edge> edges;
   edges.reserve(point_of.size());
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    for(std::size_t c = first[f]; c < first[f + 1]; ++c)
-      edges.push_back({point_of[c], point_of[next_corner(f, c)], c});
-  std::sort(edges.begin(), edges.end());
-  for(std::size_t i = 0; i < edges.size(); ++i) {
-    if(i > 0 && !(edges[i - 1] < edges[i]))
-      return "an edge is used twice in the same direction (inconsistent orientation or non-manifold edge)";
+  for(std::size_t c = 0; c < point_of.size(); ++c) {
+    const std::uint64_t from = point_of[c], to = point_of[next_of[c]];
+    edges.push_back({((std::min)(from, to) << 32) | (std::max)(from, to), std::uint32_t(c), from < to});
   }
-  auto find_edge = [&edges](std::size_t from, std::size_t to) -> const Directed_edge* {
-    const auto it = std::lower_bound(edges.begin(), edges.end(), Directed_edge{from, to, 0});
-    return it != edges.end() && it->from == from && it->to == to ? &*it : nullptr;
-  };
-
-  // The corners around a point are linked across the edges they share; a manifold
-  // vertex has them all in one fan. The corner at v before edge v->w is linked to
-  // the corner at v after the opposite edge w->v (the one following w's corner).
-  std::vector<std::size_t> polygon_of(point_of.size());
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    std::fill(polygon_of.begin() + std::ptrdiff_t(first[f]), polygon_of.begin() + std::ptrdiff_t(first[f + 1]), f);
+  std::sort(edges.begin(), edges.end());
   Corner_sets fans(point_of.size());
-  for(const Directed_edge& e : edges)
-    if(const Directed_edge* opposite = find_edge(e.to, e.from))
-      fans.unite(e.corner, next_corner(polygon_of[opposite->corner], opposite->corner));
+  for(std::size_t i = 0; i < edges.size();) {
+    std::size_t j = i + 1;
+    while(j < edges.size() && edges[j].key == edges[i].key)
+      ++j;
+    if(j - i > 2)
+      return "an edge is shared by more than two faces";
+    if(j - i == 2) {
+      if(edges[i].forward == edges[i + 1].forward)
+        return "two faces sharing an edge have opposite orientations";
+      const std::size_t c1 = edges[i].corner, c2 = edges[i + 1].corner;
+      fans.unite(c1, next_of[c2]);
+      fans.unite(c2, next_of[c1]);
+    }
+    i = j;
+  }
   std::vector<std::size_t> fan_of(points.size(), std::size_t(-1));
   for(std::size_t c = 0; c < point_of.size(); ++c) {
     const std::size_t fan = fans.find(c);
