@@ -15,7 +15,6 @@
 #include <CGAL/Range_space_remeshing/prepare_input.h> // internal::fan_triangulate
 
 #include <CGAL/IO/Color.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/IO/OBJ.h>
 #include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/boost/graph/IO/PLY.h>
@@ -84,24 +83,15 @@ inline mode_t new_file_mode()
   return mode;
 }
 
-/// A copy of `mesh` whose faces are all triangles: CGAL's triangulation, with fans
-/// where it gives up (STL stores triangles only).
+/// A copy of `mesh` whose faces are all triangles (STL stores triangles only): each
+/// polygon split into a fan from its first corner. Not CGAL's triangulation, which on
+/// a non-planar polygon of the primal remesh can cascade into exact intersections for
+/// minutes; the remesh's polygons are small and nearly convex, which fans suit.
 template <class Mesh>
 Mesh triangulated_copy(const Mesh& mesh)
 {
   Mesh triangles = mesh;
-  if(CGAL::is_triangle_mesh(triangles))
-    return triangles;
-  bool all = false;
-  try {
-    all = CGAL::Polygon_mesh_processing::triangulate_faces(triangles);
-  } catch(const std::exception&) {
-    all = false;
-  }
-  if(!all || !CGAL::Range_space_remeshing::internal::is_triangle_structure(triangles)) {
-    triangles = mesh;
-    CGAL::Range_space_remeshing::internal::fan_triangulate(triangles);
-  }
+  CGAL::Range_space_remeshing::internal::fan_triangulate(triangles);
   return triangles;
 }
 

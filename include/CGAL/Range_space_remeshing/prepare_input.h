@@ -219,13 +219,17 @@ void triangulate_polygons(const PointRange& points, const PolygonRange& polygons
   for(auto f : faces(mesh))
     if(degree(f, mesh) > 3 && degree(f, mesh) <= largest_polygon_triangulated)
       polygons_to_triangulate.push_back(f);
+  bool completed = true;
   try {
     CGAL::Polygon_mesh_processing::triangulate_faces(polygons_to_triangulate, mesh);
   } catch(const std::exception&) {
-    // left to the fans below
+    completed = false; // a mesh left half-way through is not to be trusted
   }
-  fan_triangulate(mesh); // what is left: the largest polygons, those CGAL gave up on
-  if(!is_triangle_structure(mesh))
+  if(completed)
+    fan_triangulate(mesh); // what is left: the largest polygons, those CGAL gave up on
+  // on degenerate polygons CGAL's triangulation can break the structure (found by the
+  // fuzzers: a pentagon folded onto a plane, an OBJ whose faces fold onto each other)
+  if(!completed || !is_triangle_structure(mesh) || !CGAL::is_valid_polygon_mesh(mesh))
     build_from_fans(points, polygons, mesh);
 }
 
