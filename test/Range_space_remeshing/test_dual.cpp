@@ -160,8 +160,8 @@ void check_input(const std::string& name, const Mesh& input, double relative_cel
 
   // quad collapse: more regular valences, still a closed all-quad manifold
   Mesh collapsed = qem.quads;
-  auto collapsed_planes = collapsed.property_map<Mesh::Vertex_index, RSR::Tangent_planes>("v:planes").first;
-  auto collapsed_normals = collapsed.property_map<Mesh::Vertex_index, Vector>("v:normal").first;
+  auto collapsed_planes = existing_property_map<Mesh::Vertex_index, RSR::Tangent_planes>(collapsed, "v:planes");
+  auto collapsed_normals = existing_property_map<Mesh::Vertex_index, Vector>(collapsed, "v:normal");
   const RSR::Collapse_statistics cs = RSR::collapse_quads(
       collapsed, RSR::parameters::vertex_tangent_planes_map(
                      collapsed_planes, params::vertex_normal_map(collapsed_normals)));
@@ -182,8 +182,8 @@ void check_input(const std::string& name, const Mesh& input, double relative_cel
 
   // relaxation: evens out the edges without shrinking
   Mesh relaxed = collapsed;
-  auto planes = relaxed.property_map<Mesh::Vertex_index, RSR::Tangent_planes>("v:planes").first;
-  auto dual_normals = relaxed.property_map<Mesh::Vertex_index, Vector>("v:normal").first;
+  auto planes = existing_property_map<Mesh::Vertex_index, RSR::Tangent_planes>(relaxed, "v:planes");
+  auto dual_normals = existing_property_map<Mesh::Vertex_index, Vector>(relaxed, "v:normal");
   RSR::relax_on_tangent_planes(relaxed, RSR::parameters::vertex_tangent_planes_map(
                                             planes, params::number_of_iterations(3).vertex_normal_map(dual_normals)));
   CHECK(CGAL::is_valid_polygon_mesh(relaxed));

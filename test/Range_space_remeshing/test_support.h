@@ -7,8 +7,13 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/version.h>
+#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
+#include <CGAL/AABB_traits_3.h> // CGAL 6 deprecates AABB_traits (a warning) for this
+#else
+#include <CGAL/AABB_traits.h>
+#endif
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -189,6 +194,24 @@ inline long euler_characteristic(const Mesh& m)
   return long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m));
 }
 
+/// The property map `name` of `m`, which the test expects to be there (it stops
+/// otherwise): `Surface_mesh::property_map()` returns a (map, found) pair in CGAL 5,
+/// an std::optional since CGAL 6.
+template <class I, class T>
+Mesh::Property_map<I, T> existing_property_map(const Mesh& m, const std::string& name)
+{
+  const auto found = m.property_map<I, T>(name);
+#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
+  if(found)
+    return *found;
+#else
+  if(found.second)
+    return found.first;
+#endif
+  std::cerr << "no property map '" << name << "'" << std::endl;
+  std::exit(1);
+}
+
 inline std::size_t number_of_components(Mesh& m)
 {
   auto fcc = m.add_property_map<Mesh::Face_index, std::size_t>("f:cc_test").first;
@@ -245,7 +268,11 @@ inline Mesh triangulated(const Mesh& mesh)
   return fans;
 }
 
+#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
+using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits_3<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+#else
 using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<K, CGAL::AABB_face_graph_triangle_primitive<Mesh>>>;
+#endif
 
 inline Distance distance_to(const Mesh& reference, const Mesh& mesh, std::size_t samples = 100000)
 {

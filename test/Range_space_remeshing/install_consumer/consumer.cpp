@@ -6,6 +6,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/version_macros.h>
 
 #include <iostream>
 
@@ -17,6 +18,7 @@ int main()
   const auto stats = CGAL::Range_space_remeshing::remesh(icosahedron, quads, CGAL::parameters::grid_spacing(0.2));
   const bool ok = num_faces(quads) > 20 && stats.dual.non_quads == 0 && CGAL::is_valid_polygon_mesh(quads) &&
                   CGAL::is_closed(quads);
-  std::cout << "consumer: " << num_faces(quads) << " quads from the installed package" << std::endl;
+  std::cout << "consumer: " << num_faces(quads) << " quads from the installed package (CGAL " << CGAL_VERSION_STR << ")"
+            << std::endl;
   return ok ? 0 : 1;
 }
