@@ -95,23 +95,30 @@ Mesh triangulated_copy(const Mesh& mesh)
   return triangles;
 }
 
+/// How many vertices of `mesh` sit where another one does once their coordinates
+/// are written as `Scalar`s.
+template <class Scalar, class Mesh>
+std::size_t coinciding_vertices(const Mesh& mesh)
+{
+  std::vector<std::array<Scalar, 3>> positions;
+  positions.reserve(num_vertices(mesh));
+  for(auto v : vertices(mesh)) {
+    const auto p = get(CGAL::vertex_point, mesh, v);
+    positions.push_back({{static_cast<Scalar>(CGAL::to_double(p.x())), static_cast<Scalar>(CGAL::to_double(p.y())),
+                          static_cast<Scalar>(CGAL::to_double(p.z()))}});
+  }
+  std::sort(positions.begin(), positions.end());
+  const auto distinct = std::unique(positions.begin(), positions.end());
+  return std::size_t(positions.end() - distinct);
+}
+
 /// How many vertices of `mesh` sit where another one does once written to STL (as
 /// floats in binary, as doubles in text): STL stores positions only, so a reader
 /// would join them, and the file would not be the same surface.
 template <class Mesh>
 std::size_t vertices_joined_by_stl(const Mesh& mesh, bool binary)
 {
-  std::vector<std::array<double, 3>> positions;
-  for(auto v : vertices(mesh)) {
-    const auto& p = get(CGAL::vertex_point, mesh, v);
-    std::array<double, 3> x{{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
-    if(binary)
-      for(double& c : x)
-        c = double(float(c));
-    positions.push_back(x);
-  }
-  std::sort(positions.begin(), positions.end());
-  return std::size_t(positions.end() - std::unique(positions.begin(), positions.end()));
+  return binary ? coinciding_vertices<float>(mesh) : coinciding_vertices<double>(mesh);
 }
 
 } // namespace internal

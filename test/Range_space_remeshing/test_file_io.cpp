@@ -312,7 +312,11 @@ void test_written_files_read_back()
                e = two.add_vertex(Point(-1, 0, 0)), f = two.add_vertex(Point(0, -1, 0));
     two.add_face(a, b, c);
     two.add_face(d, e, f);
-    for(const bool binary : {false, true}) {
+    CHECK_EQ(rsr_io::internal::vertices_joined_by_stl(two, false), std::size_t(1));
+    two.point(d) = Point(1 + 1e-12, 0, 0); // apart from b as doubles, one point as floats
+    CHECK_EQ(rsr_io::internal::vertices_joined_by_stl(two, false), std::size_t(0));
+    CHECK_EQ(rsr_io::internal::vertices_joined_by_stl(two, true), std::size_t(1));
+    for(const bool binary : {true}) {
       bool refused = false;
       try {
         rsr_io::Output_files files;

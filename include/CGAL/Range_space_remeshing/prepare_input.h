@@ -168,7 +168,7 @@ void fan_triangulate(PolygonMesh& mesh)
       polygons.push_back(f);
   for(auto f : polygons) {
     auto h = halfedge(f, mesh);
-    while(degree(face(h, mesh), mesh) > 3)
+    for(std::size_t corners = degree(f, mesh); corners > 3; --corners) // each split cuts off a triangle
       h = prev(CGAL::Euler::split_face(h, next(next(h, mesh), mesh), mesh), mesh);
   }
 }
