@@ -189,10 +189,10 @@ bool is_triangle_structure(const PolygonMesh& mesh)
   return true;
 }
 
-/// Polygons of more corners than this are split into fans from their first corner:
-/// CGAL's triangulation falls back, on a polygon whose projection is not simple, to
-/// hole filling, whose time grows as the cube of the corners (a cone's base of 300,000
-/// corners did not end in minutes).
+/// With a polygon of more corners than this, all polygons are split into fans from
+/// their first corner: on a polygon whose projection is not simple, CGAL's
+/// triangulation falls back to hole filling, whose time grows as the cube of the
+/// number of corners.
 constexpr std::size_t largest_polygon_triangulated = 1000;
 
 /// Builds `mesh` from the soup, each polygon split into a fan from its first corner.
@@ -210,25 +210,26 @@ void build_from_fans(const PointRange& points, const PolygonRange& polygons, Pol
   mesh = std::move(fans);
 }
 
-/// The polygons of `mesh` split into triangles: CGAL's triangulation where it
-/// succeeds, fans where it gives up or breaks the structure (degenerate polygons).
+/// The polygons of `mesh` (built from the soup) split into triangles: CGAL's
+/// triangulation, or fans built from the soup where a polygon is too large for it or
+/// where it fails. A mesh CGAL's triangulation threw on or broke (found by the fuzzers:
+/// a pentagon folded onto a plane, an OBJ whose faces fold onto each other) is not
+/// walked face by face, where a broken cycle would never end: only its triangles'
+/// three steps are checked, then CGAL's validity check.
 template <class PointRange, class PolygonRange, class PolygonMesh>
 void triangulate_polygons(const PointRange& points, const PolygonRange& polygons, PolygonMesh& mesh)
 {
-  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> polygons_to_triangulate;
-  for(auto f : faces(mesh))
-    if(degree(f, mesh) > 3 && degree(f, mesh) <= largest_polygon_triangulated)
-      polygons_to_triangulate.push_back(f);
+  for(const auto& polygon : polygons)
+    if(polygon.size() > largest_polygon_triangulated) {
+      build_from_fans(points, polygons, mesh);
+      return;
+    }
   bool completed = true;
   try {
-    CGAL::Polygon_mesh_processing::triangulate_faces(polygons_to_triangulate, mesh);
+    CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
   } catch(const std::exception&) {
-    completed = false; // a mesh left half-way through is not to be trusted
+    completed = false;
   }
-  if(completed)
-    fan_triangulate(mesh); // what is left: the largest polygons, those CGAL gave up on
-  // on degenerate polygons CGAL's triangulation can break the structure (found by the
-  // fuzzers: a pentagon folded onto a plane, an OBJ whose faces fold onto each other)
   if(!completed || !is_triangle_structure(mesh) || !CGAL::is_valid_polygon_mesh(mesh))
     build_from_fans(points, polygons, mesh);
 }
