@@ -1,5 +1,5 @@
 # Tests of the command-line program: run with
-#   cmake -DCLI=... -DCLI_SOURCE=... -DMESH_DIR=... -DWORK_DIR=... -P test_command_line.cmake
+#   cmake -DCLI=... -DCLI_SOURCE=... -DMESH_DIR=... -DDATA_DIR=... -DWORK_DIR=... -P test_command_line.cmake
 cmake_minimum_required(VERSION 3.19)
 
 set(failures 0)
@@ -533,6 +533,18 @@ expect_message("no area" "an input of no area")
 if(EXISTS /dev/zero)
   run(2 x.off --map view --camera /dev/zero ${elephant} x.off)
 endif()
+
+# a small sphere beside a large one, whose primal piece the dual cannot keep (a
+# pillow): the primal's check passes, but the output has one component of two; that
+# is not 'preserved', and --preserve-topology refines until both are kept
+set(two_spheres ${DATA_DIR}/two_spheres_dual_drop.off)
+run(0 two_a.off --stats --absolute --cell-size 1 ${two_spheres} two_a.off)
+expect_json(1 dual_dropped_pieces)
+expect_json(OFF topology preserved)
+run(0 two_b.off --stats --absolute --cell-size 1 --preserve-topology ${two_spheres} two_b.off)
+expect_json(2 output_components)
+expect_json(0 dual_dropped_pieces)
+expect_json(ON topology preserved)
 
 # ------------------------------------------------------------ output files
 # STL stores triangles: every quad is split, none is half written (the area is
