@@ -984,8 +984,9 @@ int main(int argc, char** argv)
               << (capped ? " (use a larger --cell-size, or raise the cap with --max-vertices)" : "") << std::endl;
   } catch(const std::bad_alloc&) {
     std::cerr << "range_space_remesh: out of memory" << std::endl;
-  } catch(const std::exception& e) {
-    std::cerr << "range_space_remesh: " << e.what() << std::endl;
+  } catch(const std::exception& e) { // one line, whatever the message (CGAL's assertions have several)
+    const std::string message = e.what();
+    std::cerr << "range_space_remesh: " << message.substr(0, message.find('\n')) << std::endl;
   }
   return 2;
 }

@@ -258,7 +258,13 @@ void orient_outward(TriangleMesh& mesh, Input_repair_statistics& statistics)
   std::vector<std::pair<vertex_descriptor, vertex_descriptor>> first_edges;
   for(auto f : faces(mesh))
     first_edges.emplace_back(source(halfedge(f, mesh), mesh), target(halfedge(f, mesh), mesh));
-  CGAL::Polygon_mesh_processing::orient(mesh);
+  try {
+    CGAL::Polygon_mesh_processing::orient(mesh);
+  } catch(const std::exception&) {
+    // CGAL's assertions (on in debug builds) refuse a surface too degenerate to have
+    // an outside (found by fuzz_read): it stays consistently oriented, either way
+    return;
+  }
   std::size_t i = 0;
   for(auto f : faces(mesh)) { // faces keep their descriptors: a reversed one has its edge backwards
     const auto [u, v] = first_edges[i++];
