@@ -13,7 +13,6 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
-#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -173,65 +172,43 @@ void fan_triangulate(PolygonMesh& mesh)
   }
 }
 
-/// Whether every face is a triangle whose halfedges point back to it and chain up.
-template <class PolygonMesh>
-bool is_triangle_structure(const PolygonMesh& mesh)
+/// Splits every polygon of the soup into triangles, in the soup: a quadrilateral
+/// along its shorter diagonal, a larger polygon into a fan from its first corner.
+/// Not CGAL's `triangulate_faces()`: on a non-planar polygon whose projection crosses
+/// itself its constrained triangulation can run without end (found by the fuzzers
+/// on a quadrilateral), and it falls back to hole filling, whose time grows as the
+/// cube of the corners. A split that breaks the mesh (a diagonal that is an edge
+/// already) is then repaired like any other defect. Returns the polygons split.
+template <class PointRange, class PolygonRange>
+std::size_t split_polygons(const PointRange& points, PolygonRange& polygons)
 {
-  for(auto f : faces(mesh)) {
-    const auto h0 = halfedge(f, mesh), h1 = next(h0, mesh), h2 = next(h1, mesh);
-    if(next(h2, mesh) != h0)
-      return false;
-    for(auto h : {h0, h1, h2})
-      if(face(h, mesh) != f || target(h, mesh) != source(next(h, mesh), mesh) ||
-         opposite(opposite(h, mesh), mesh) != h)
-        return false;
-  }
-  return true;
-}
-
-/// With a polygon of more corners than this, all polygons are split into fans from
-/// their first corner: on a polygon whose projection is not simple, CGAL's
-/// triangulation falls back to hole filling, whose time grows as the cube of the
-/// number of corners.
-constexpr std::size_t largest_polygon_triangulated = 1000;
-
-/// Builds `mesh` from the soup, each polygon split into a fan from its first corner.
-template <class PointRange, class PolygonRange, class PolygonMesh>
-void build_from_fans(const PointRange& points, const PolygonRange& polygons, PolygonMesh& mesh)
-{
-  std::vector<std::vector<std::size_t>> triangles;
-  for(const auto& polygon : polygons)
-    for(std::size_t i = 1; i + 1 < polygon.size(); ++i)
-      triangles.push_back({polygon[0], polygon[i], polygon[i + 1]});
-  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(triangles))
-    throw Remeshing_error("a polygon of the input cannot be split into triangles without breaking the mesh");
-  PolygonMesh fans;
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, fans);
-  mesh = std::move(fans);
-}
-
-/// The polygons of `mesh` (built from the soup) split into triangles: CGAL's
-/// triangulation, or fans built from the soup where a polygon is too large for it or
-/// where it fails. A mesh CGAL's triangulation threw on or broke (found by the fuzzers:
-/// a pentagon folded onto a plane, an OBJ whose faces fold onto each other) is not
-/// walked face by face, where a broken cycle would never end: only its triangles'
-/// three steps are checked, then CGAL's validity check.
-template <class PointRange, class PolygonRange, class PolygonMesh>
-void triangulate_polygons(const PointRange& points, const PolygonRange& polygons, PolygonMesh& mesh)
-{
-  for(const auto& polygon : polygons)
-    if(polygon.size() > largest_polygon_triangulated) {
-      build_from_fans(points, polygons, mesh);
-      return;
+  std::size_t split = 0;
+  const std::size_t count = polygons.size();
+  for(std::size_t f = 0; f < count; ++f) {
+    auto& polygon = polygons[f];
+    const std::size_t n = polygon.size();
+    if(n <= 3)
+      continue;
+    ++split;
+    std::vector<std::vector<std::size_t>> triangles;
+    if(n == 4) {
+      const auto& p = polygon;
+      const bool first_diagonal = CGAL::compare_squared_distance(points[p[0]], points[p[2]],
+                                                                 CGAL::squared_distance(points[p[1]], points[p[3]])) !=
+                                  CGAL::LARGER;
+      if(first_diagonal)
+        triangles = {{p[0], p[1], p[2]}, {p[0], p[2], p[3]}};
+      else
+        triangles = {{p[1], p[2], p[3]}, {p[1], p[3], p[0]}};
+    } else {
+      for(std::size_t i = 1; i + 1 < n; ++i)
+        triangles.push_back({polygon[0], polygon[i], polygon[i + 1]});
     }
-  bool completed = true;
-  try {
-    CGAL::Polygon_mesh_processing::triangulate_faces(mesh);
-  } catch(const std::exception&) {
-    completed = false;
+    polygon.assign(triangles[0].begin(), triangles[0].end()); // before emplace_back() may move it
+    for(std::size_t t = 1; t < triangles.size(); ++t)
+      polygons.emplace_back(triangles[t].begin(), triangles[t].end());
   }
-  if(!completed || !is_triangle_structure(mesh) || !CGAL::is_valid_polygon_mesh(mesh))
-    build_from_fans(points, polygons, mesh);
+  return split;
 }
 
 /// Whether some triangle of `mesh` has corners that are not on one line (exactly).
@@ -290,8 +267,10 @@ with `Input_repair::REPAIR`, CGAL's repair runs: points at the same position are
 merged, polygons with a repeated corner or fewer than 3 corners and duplicated
 polygons are removed, unused points are removed, the polygons are oriented
 (`CGAL::Polygon_mesh_processing::orient_polygon_soup()`), which splits non-manifold
-vertices and edges. Polygons are then triangulated, and a repaired closed surface is
-oriented outward (`CGAL::Polygon_mesh_processing::orient()`). Every change is counted in the
+vertices and edges. Polygons are split into triangles first (a quadrilateral along its
+shorter diagonal, a larger polygon into a fan from its first corner, which on a
+non-convex polygon overlaps itself: a touching sheet for the remesher), and a repaired
+closed surface is oriented outward (`CGAL::Polygon_mesh_processing::orient()`). Every change is counted in the
 returned statistics. Since points are only merged where they coincide or copied,
 every vertex of `mesh` sits at the position of some input point: an attribute of
 the points follows them by position.
@@ -317,6 +296,7 @@ Input_repair_statistics prepare_input(PointRange& points, PolygonRange& polygons
   Input_repair_statistics statistics;
   internal::check_soup_values(points, polygons);
   internal::remove_isolated_points(points, polygons, statistics); // never repaired away: unused
+  statistics.triangulated_polygons = internal::split_polygons(points, polygons);
   const std::string problem = internal::soup_problem(points, polygons);
   if(!problem.empty()) {
     if(repair == Input_repair::REFUSE)
@@ -329,10 +309,6 @@ Input_repair_statistics prepare_input(PointRange& points, PolygonRange& polygons
   }
   clear(mesh);
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-  for(const auto& polygon : polygons)
-    statistics.triangulated_polygons += (polygon.size() > 3);
-  if(statistics.triangulated_polygons > 0)
-    internal::triangulate_polygons(points, polygons, mesh);
   if(!problem.empty())
     internal::orient_outward(mesh, statistics);
   if(!internal::has_a_non_degenerate_face(mesh))
