@@ -920,9 +920,10 @@ int main(int argc, char** argv)
     double h = options.cell_size;
     if(!options.absolute) {
       const CGAL::Bbox_3 box = PMP::bbox(input);
-      // hypot: neither overflow nor underflow for coordinates near 1e300 or 1e-300
-      const double diagonal =
-          std::hypot(std::hypot(box.xmax() - box.xmin(), box.ymax() - box.ymin()), box.zmax() - box.zmin());
+      const double dx = box.xmax() - box.xmin(), dy = box.ymax() - box.ymin(), dz = box.zmax() - box.zmin();
+      double diagonal = std::sqrt(dx * dx + dy * dy + dz * dz);
+      if(!(diagonal > 0) || !std::isfinite(diagonal)) // squares out of range (coordinates near 1e300, 1e-300)
+        diagonal = std::hypot(std::hypot(dx, dy), dz);
       if(!(diagonal > 0))
         fail("the input's bounding box is a single point");
       h *= diagonal;

@@ -179,7 +179,7 @@ void test_bombs_are_refused_before_allocation()
 
 void test_repairs_are_counted()
 {
-  // an STL soup of the octahedron: 24 points for 6
+  // a soup of the octahedron's triangles, each with its own points: 24 points for 6
   auto off = parse(octahedron_off(), "off");
   std::vector<Point> points;
   std::vector<std::vector<std::size_t>> polygons;
@@ -193,14 +193,10 @@ void test_repairs_are_counted()
   Mesh mesh;
   auto soup_points = points;
   auto soup_polygons = polygons;
-  bool refused = false;
-  try {
-    RSR::prepare_input(soup_points, soup_polygons, mesh, RSR::Input_repair::REFUSE);
-  } catch(const RSR::Remeshing_error&) {
-    refused = true;
-  }
-  CHECK(refused);
-  auto repairs = RSR::prepare_input(points, polygons, mesh);
+  // separate triangles are a mesh as they are: REFUSE takes them so, 8 pieces
+  auto repairs = RSR::prepare_input(soup_points, soup_polygons, mesh, RSR::Input_repair::REFUSE);
+  CHECK(!repairs.repaired() && num_vertices(mesh) == 24 && num_faces(mesh) == 8);
+  repairs = RSR::prepare_input(points, polygons, mesh);
   CHECK_EQ(repairs.merged_points, std::size_t(18));
   CHECK(repairs.repaired());
   CHECK_EQ(num_vertices(mesh), std::size_t(6));

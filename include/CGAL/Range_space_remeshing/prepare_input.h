@@ -112,6 +112,22 @@ void remove_isolated_points(PointRange& points, PolygonRange& polygons, Input_re
       v = new_index[v];
 }
 
+/// Merges the points at the same position if the soup is then still an oriented
+/// 2-manifold.
+template <class PointRange, class PolygonRange>
+void merge_if_still_a_mesh(PointRange& points, PolygonRange& polygons, Input_repair_statistics& statistics)
+{
+  PointRange merged_points = points;
+  PolygonRange merged_polygons = polygons;
+  const std::size_t merged =
+      CGAL::Polygon_mesh_processing::merge_duplicate_points_in_polygon_soup(merged_points, merged_polygons);
+  if(!soup_problem(merged_points, merged_polygons).empty())
+    return;
+  points.swap(merged_points);
+  polygons.swap(merged_polygons);
+  statistics.merged_points += merged;
+}
+
 /// Removes the corners equal to the one before them (cyclically), then the polygons
 /// with fewer than 3 corners or a corner twice (pinched: no orientable disk).
 template <class PolygonRange>
@@ -297,7 +313,15 @@ Input_repair_statistics prepare_input(PointRange& points, PolygonRange& polygons
   internal::check_soup_values(points, polygons);
   internal::remove_isolated_points(points, polygons, statistics); // never repaired away: unused
   statistics.triangulated_polygons = internal::split_polygons(points, polygons);
-  const std::string problem = internal::soup_problem(points, polygons);
+  std::string problem = internal::soup_problem(points, polygons);
+  if(problem == internal::coinciding_points) {
+    // a mesh already, with points at the same position: joined where that closes seams
+    // or a soup of separate polygons into a mesh, kept apart where it would not
+    // (as at the pinched holes of CGAL's elephant-with-holes) and with REFUSE
+    if(repair == Input_repair::REPAIR)
+      internal::merge_if_still_a_mesh(points, polygons, statistics);
+    problem.clear();
+  }
   if(!problem.empty()) {
     if(repair == Input_repair::REFUSE)
       throw Remeshing_error("the input is not an oriented 2-manifold mesh: " + problem);

@@ -68,8 +68,13 @@ struct Polygon_edge
   bool operator<(const Polygon_edge& e) const { return key < e.key; }
 };
 
+/// What `soup_problem()` says of a soup that is an oriented 2-manifold mesh but for
+/// points at the same position (a seam, or a soup of separate polygons).
+inline const char* const coinciding_points = "two vertices are at the same position";
+
 /// What keeps the soup from being an oriented 2-manifold mesh without unused or
-/// coinciding points, in words ("" if nothing): the first problem found.
+/// coinciding points, in words ("" if nothing): the first problem found, coinciding
+/// points only if there is no other.
 template <class PointRange, class PolygonRange>
 std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
 {
@@ -91,17 +96,6 @@ std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
   }
   if(std::find(last_polygon.begin(), last_polygon.end(), std::size_t(-1)) != last_polygon.end())
     return "a vertex is used by no face";
-
-  std::vector<std::size_t> by_position(points.size());
-  std::iota(by_position.begin(), by_position.end(), std::size_t(0));
-  auto less = [&points](std::size_t a, std::size_t b) {
-    return std::make_tuple(points[a].x(), points[a].y(), points[a].z()) <
-           std::make_tuple(points[b].x(), points[b].y(), points[b].z());
-  };
-  std::sort(by_position.begin(), by_position.end(), less);
-  for(std::size_t i = 1; i < by_position.size(); ++i)
-    if(!less(by_position[i - 1], by_position[i]))
-      return "two vertices are at the same position";
 
   // Sorted by their points, the edges of the polygons come in groups: one polygon
   // (a border edge) or two going opposite ways (an inner edge). Across an inner
@@ -141,6 +135,18 @@ std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
     else if(seen != fan)
       return "a vertex is non-manifold (its faces form more than one fan)";
   }
+  // last: a soup with no other problem is a mesh even with coinciding points
+  std::vector<std::size_t> by_position(points.size());
+  std::iota(by_position.begin(), by_position.end(), std::size_t(0));
+  auto less = [&points](std::size_t a, std::size_t b) {
+    return std::make_tuple(points[a].x(), points[a].y(), points[a].z()) <
+           std::make_tuple(points[b].x(), points[b].y(), points[b].z());
+  };
+  std::sort(by_position.begin(), by_position.end(), less);
+  for(std::size_t i = 1; i < by_position.size(); ++i)
+    if(!less(by_position[i - 1], by_position[i]))
+      return coinciding_points;
+
   return "";
 }
 
