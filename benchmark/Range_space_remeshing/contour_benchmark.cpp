@@ -59,7 +59,7 @@ RSR::Statistics run_once(const Mesh& input, double h, RSR::Seeding_method seedin
   const auto start = std::chrono::steady_clock::now();
   const auto stats = RSR::primal_remesh(
       input, output,
-      RSR::parameters::check_topology(check_topology, CGAL::parameters::grid_spacing(h).seeding_method(seeding)));
+      RSR::parameters::check_topology(check_topology).grid_spacing(h).seeding_method(seeding));
   wall_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }
@@ -146,23 +146,19 @@ void measure_dual(const std::string& name, const Mesh& input, double h, int runs
     Mesh q;
     auto planes = q.add_property_map<Mesh::Vertex_index, RSR::Tangent_planes>("v:planes").first;
     auto qn = q.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:normal").first;
-    dual_stats = RSR::dualize(primal, q, RSR::parameters::dual_placement(RSR::Dual_placement::QEM,
-                                        CGAL::parameters::vertex_normal_map(normals)),
-                              RSR::parameters::vertex_tangent_planes_map(planes,
-                                        CGAL::parameters::vertex_normal_map(qn)));
+    dual_stats = RSR::dualize(primal, q, RSR::parameters::dual_placement(RSR::Dual_placement::QEM).vertex_normal_map(normals),
+                              RSR::parameters::vertex_tangent_planes_map(planes).vertex_normal_map(qn));
     dual_valence_4 = valence_4_percent(q);
     collapse_stats = RSR::collapse_quads(
-        q, RSR::parameters::vertex_tangent_planes_map(planes, CGAL::parameters::vertex_normal_map(qn)));
-    const double relax = RSR::relax_on_tangent_planes(q, RSR::parameters::vertex_tangent_planes_map(
-        planes, CGAL::parameters::number_of_iterations(1).vertex_normal_map(qn)));
+        q, RSR::parameters::vertex_tangent_planes_map(planes).vertex_normal_map(qn));
+    const double relax = RSR::relax_on_tangent_planes(q, RSR::parameters::vertex_tangent_planes_map(planes).number_of_relaxation_steps(1).vertex_normal_map(qn));
     if(r > 0) { // the first run is the warm-up
       dual_ms.push_back(dual_stats.time_ms);
       collapse_ms.push_back(collapse_stats.time_ms);
       relax_ms.push_back(relax);
     }
     if(r == runs) {
-      RSR::relax_on_tangent_planes(q, RSR::parameters::vertex_tangent_planes_map(
-          planes, CGAL::parameters::number_of_iterations(2).vertex_normal_map(qn)));
+      RSR::relax_on_tangent_planes(q, RSR::parameters::vertex_tangent_planes_map(planes).number_of_relaxation_steps(2).vertex_normal_map(qn));
       quads = q; // 3 iterations in all
     }
   }

@@ -543,11 +543,11 @@ void table_scaling(const Model& base, int runs)
     std::array<RSR::Statistics, 3> stats;
     for(int mode = 0; mode < 3; ++mode) {
       const auto seeding = mode == 0 ? RSR::Seeding_method::COMPLETE_SCAN : RSR::Seeding_method::SEEDED;
-      const auto np = CGAL::parameters::grid_spacing(h).seeding_method(seeding);
+      const auto np = RSR::parameters::grid_spacing(h).seeding_method(seeding);
       std::vector<double> times;
       for(int r = 0; r <= runs; ++r) {
         Mesh output;
-        stats[mode] = mode == 2 ? RSR::primal_remesh(mesh, output, RSR::parameters::seed_faces(seeds, np))
+        stats[mode] = mode == 2 ? RSR::primal_remesh(mesh, output, np.seed_faces(seeds))
                                 : RSR::primal_remesh(mesh, output, np);
         if(r > 0) // the first run is the warm-up
           times.push_back(stats[mode].time_total_ms);
@@ -615,12 +615,12 @@ void table_deforming(const Model& model)
         for(int frame = 0; frame < frames; ++frame) {
           const Twisted_points twisted{&input, 1.5 / height * frame / frames, 0.5 * (box.xmin() + box.xmax()),
                                        0.5 * (box.ymin() + box.ymax())};
-          const auto np = CGAL::parameters::vertex_point_map(twisted)
+          const auto np = RSR::parameters::vertex_point_map(twisted)
                               .grid_spacing(cell * model.diagonal)
                               .seeding_method(seeding);
           Mesh output;
           if(mode == 2)
-            RSR::remesh(input, output, RSR::parameters::seed_faces(seeds, np));
+            RSR::remesh(input, output, np.seed_faces(seeds));
           else
             RSR::remesh(input, output, np);
           quads += num_faces(output);

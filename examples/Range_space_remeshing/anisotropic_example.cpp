@@ -28,10 +28,11 @@ int main(int argc, char** argv)
     Mesh quads;
     try {
       // the package's own named parameters take the pack they extend as last argument
-      const auto np = RSR::parameters::dual_placement(
-          RSR::Dual_placement::QEM,
-          RSR::parameters::quad_collapse(
-              true, RSR::parameters::range_map(f).grid_spacing(h).number_of_relaxation_steps(3)));
+      const auto np = RSR::parameters::range_map(f)
+                          .grid_spacing(h)
+                          .dual_placement(RSR::Dual_placement::QEM)
+                          .quad_collapse(true)
+                          .number_of_relaxation_steps(3);
       const auto stats = RSR::remesh(input, quads, np);
       std::cout << "normal weight " << normal_weight << ": " << num_faces(quads) << " quads ("
                 << stats.collapse.collapsed_quads << " collapsed) in " << stats.time_total_ms << " ms"

@@ -63,7 +63,7 @@ int main(int argc, char** argv)
     try {
       // the identity map of the twisted points: a uniform remesh of this frame's shape
       RSR::remesh(rest, quads,
-                  CGAL::parameters::vertex_point_map(twisted).grid_spacing(h).seeding_method(
+                  RSR::parameters::vertex_point_map(twisted).grid_spacing(h).seeding_method(
                       RSR::Seeding_method::SEEDED));
     } catch(const RSR::Remeshing_error& e) {
       std::cerr << "frame " << frame << ": " << e.what() << std::endl;

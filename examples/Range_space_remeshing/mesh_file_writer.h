@@ -62,6 +62,16 @@ inline Pending_files& pending_files()
   return files;
 }
 
+/// Whether a write has temporary files not yet renamed (safe in a signal handler).
+inline bool has_pending_files()
+{
+  const Pending_files& files = pending_files();
+  for(int i = 0; i < Pending_files::capacity; ++i)
+    if(files.used[i])
+      return true;
+  return false;
+}
+
 extern "C" inline void remove_pending_files_and_die(int signal_number)
 {
   Pending_files& files = pending_files();

@@ -20,7 +20,7 @@ int main(int argc, char** argv)
   if(!read_example_input(argc, argv, input))
     return EXIT_FAILURE;
   try {
-    const auto stats = RSR::remesh(input, quads, CGAL::parameters::grid_spacing(0.02 * bbox_diagonal(input)));
+    const auto stats = RSR::remesh(input, quads, RSR::parameters::grid_spacing(0.02 * bbox_diagonal(input)));
     std::cout << input.size_of_facets() << " triangles -> " << quads.size_of_facets() << " quads ("
               << stats.dual.non_quads << " other faces) in " << stats.time_total_ms << " ms" << std::endl;
   } catch(const RSR::Remeshing_error& e) {

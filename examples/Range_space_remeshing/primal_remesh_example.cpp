@@ -39,7 +39,7 @@ int main(int argc, char** argv)
     // The map defaults to the identity; any property map vertex -> std::array<double, D>
     // can be passed with RSR::parameters::range_map(f).
     const RSR::Statistics stats = RSR::primal_remesh(
-        input, remesh, CGAL::parameters::grid_spacing(0.02 * diagonal),
+        input, remesh, RSR::parameters::grid_spacing(0.02 * diagonal),
         CGAL::parameters::vertex_normal_map(normals));
     std::cout << num_vertices(input) << " input vertices -> " << stats.output_vertices
               << " vertices, " << stats.output_faces << " faces in " << stats.time_total_ms

@@ -33,6 +33,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <csignal>
 #include <cstddef>
 #include <cstdio>
 #include <cstdlib>
@@ -50,6 +51,8 @@
 #include <vector>
 
 #include <filesystem>
+
+#include <unistd.h>
 
 namespace {
 
@@ -135,13 +138,17 @@ const char* usage =
     "                          on stderr when the check finds a defect\n"
     "  --topology-report FILE  write the input faces where the topology check found\n"
     "                          defects to FILE, a mesh (.off .obj .ply .stl)\n"
+    "  --time-limit S        stop (exit 2, nothing written) if the remesh takes more\n"
+    "                          than S seconds\n"
+    "  --quiet               no progress line (shown on a terminal for runs over 1 s)\n"
     "  --stats               print one JSON object with counts and times on stdout\n"
     "  --strict              refuse an input that needs repairs instead of repairing it\n"
     "  --ascii               write PLY and STL as text (default: binary)\n"
     "  --help                print this help and exit\n"
     "  --                    ends the options: INPUT and OUTPUT may start with '-'\n"
     "\n"
-    "exit status: 0 on success, 2 on bad arguments or unusable input.\n";
+    "exit status: 0 on success, 2 on bad arguments, unusable input or the time limit,\n"
+    "130 when interrupted (Ctrl-C); no file is written unless the status is 0.\n";
 
 struct Failure
 {
@@ -181,6 +188,68 @@ struct Options
   std::vector<RSR::Topology_defect<Mesh::Face_index>>* defects = nullptr; // filled by the check
   long target_vertices = 0;
   std::size_t max_vertices = 0; // --max-vertices; main() sets the default (vertex_cap()) once
+  double time_limit = 0;        // seconds; 0: none
+  bool quiet = false;
+  class Progress_line* progress = nullptr; // set by main()
+};
+
+/// Set by Ctrl-C (SIGINT) while the remesh runs: the progress visitor then cancels it.
+volatile std::sig_atomic_t interrupted = 0;
+
+extern "C" void cancel_on_interrupt(int signal_number)
+{
+  // while files are written (or at a second Ctrl-C), the writer's handler removes the
+  // temporary files and dies of the signal
+  if(rsr_io::internal::has_pending_files() || interrupted)
+    rsr_io::internal::remove_pending_files_and_die(signal_number);
+  interrupted = 1;
+}
+
+/// The program's progress visitor: a progress line on stderr when it is a terminal
+/// and the run takes more than a second (not with --quiet), --time-limit, and Ctrl-C,
+/// which cancel the run.
+class Progress_line
+{
+public:
+  explicit Progress_line(const Options& options)
+    : limit_(options.time_limit), show_(!options.quiet && ::isatty(STDERR_FILENO))
+  {}
+
+  bool operator()(RSR::Remeshing_stage stage, double fraction)
+  {
+    if(interrupted)
+      return false;
+    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    if(limit_ > 0 && elapsed > limit_) {
+      timed_out_ = true;
+      return false;
+    }
+    if(show_ && elapsed > 1 && elapsed - last_shown_ >= 0.1) {
+      std::fprintf(stderr, "\rrange_space_remesh: %-14s %3d%%", RSR::stage_name(stage), int(100 * fraction));
+      std::fflush(stderr);
+      last_shown_ = elapsed;
+      shown_ = true;
+    }
+    return true;
+  }
+
+  /// Removes the progress line, if one was shown.
+  void clear()
+  {
+    if(shown_)
+      std::fputs("\r\033[K", stderr);
+    shown_ = false;
+  }
+
+  bool timed_out() const { return timed_out_; }
+  double limit() const { return limit_; }
+
+private:
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  double limit_;
+  bool show_;
+  double last_shown_ = 0;
+  bool shown_ = false, timed_out_ = false;
 };
 
 double parse_number(const std::string& option, const char* text)
@@ -267,6 +336,12 @@ Options parse_arguments(int argc, char** argv)
       options.check_topology = false;
     } else if(arg == "--topology-report") {
       options.topology_report = value();
+    } else if(arg == "--time-limit") {
+      options.time_limit = parse_number(arg, value());
+      if(!(options.time_limit > 0) || options.time_limit > 1e9)
+        fail("--time-limit expects a number of seconds between 0 and 10^9");
+    } else if(arg == "--quiet") {
+      options.quiet = true;
     } else if(arg == "--stats") {
       options.stats = true;
     } else if(arg == "--strict") {
@@ -507,7 +582,7 @@ std::size_t border_cycles(const Mesh& mesh)
 }
 
 /// The primal remesh, or the whole dual pipeline, with the named parameters `np`
-/// (cell size, seeding, relaxation steps and, but for the identity, the range map).
+/// (cell size, seeding and, but for the identity, the range map).
 template <class NamedParameters>
 RSR::Remesh_statistics run(const Mesh& input, const NamedParameters& np, const Options& options, Mesh& output)
 {
@@ -530,7 +605,8 @@ RSR::Remesh_statistics run(const Mesh& input, const NamedParameters& np, const O
   const auto placement = options.placement == "average" ? RSR::Dual_placement::AVERAGE
                          : options.placement == "sharp" ? RSR::Dual_placement::SHARP_FEATURES
                                                         : RSR::Dual_placement::QEM;
-  const auto np_all = RSR::parameters::quad_collapse(options.collapse, RSR::parameters::dual_placement(placement, np));
+  const auto np_all =
+      np.quad_collapse(options.collapse).dual_placement(placement).number_of_relaxation_steps(options.relax);
   if constexpr(colors)
     return RSR::remesh(input, output, np_all, np_out());
   else
@@ -636,37 +712,38 @@ std::size_t vertex_cap(const Options& options)
   return cap;
 }
 
-/// Remeshes with the map of the options. In relative mode (length_unit = the bounding
-/// box diagonal) the weights are scaled so that a cell of size H bounds positions by
-/// H diagonals and normals by H / W (Gauss map: H, in units of the unit cube).
+/// Remeshes with the map of the options, at cell size `h` or, with --target-vertices,
+/// at the one the library finds from it. In relative mode (length_unit = the
+/// bounding-box diagonal) the weights are scaled so that a cell of size H bounds
+/// positions by H diagonals and normals by H / W (Gauss map: H, in units of the unit
+/// cube).
 RSR::Remesh_statistics remesh(const Mesh& input, const Input_normals& normals, double h, const Options& options,
                               Mesh& output)
 {
-  output.clear();
   const auto seeding =
       options.seeded ? RSR::Seeding_method::SEEDED : RSR::Seeding_method::COMPLETE_SCAN;
   if(options.seeded && options.preserve_topology)
     fail("--preserve-topology needs the complete scan: drop --seeded");
   options.defects->clear();
-  const auto np = RSR::parameters::check_topology(
-      options.check_topology && !options.seeded,
-      RSR::parameters::preserve_topology(
-          options.preserve_topology,
-          RSR::parameters::topology_visitor(Defect_collector{options.defects},
-                                            CGAL::parameters::grid_spacing(h)
-                                                .seeding_method(seeding)
-                                                .number_of_relaxation_steps(options.relax)
-                                                .maximum_number(options.max_vertices))));
+  Progress_line* progress = options.progress;
+  const auto np = RSR::parameters::grid_spacing(h)
+                      .number_of_target_vertices(std::size_t(options.target_vertices)) // 0: none
+                      .seeding_method(seeding)
+                      .maximum_number(options.max_vertices)
+                      .check_topology(options.check_topology && !options.seeded)
+                      .preserve_topology(options.preserve_topology)
+                      .topology_visitor(Defect_collector{options.defects})
+                      .progress_visitor([progress](RSR::Remeshing_stage stage, double fraction) {
+                        return (*progress)(stage, fraction);
+                      });
   const auto points = get(CGAL::vertex_point, input);
   if(options.map == "gauss")
-    return run_with_colors(
-        input, RSR::parameters::range_map(RSR::Gauss_range_map<Input_normals>(normals, options.length_unit), np),
-        options, output);
+    return run_with_colors(input, np.range_map(RSR::Gauss_range_map<Input_normals>(normals, options.length_unit)),
+                           options, output);
   if(options.map == "position-normal")
     return run_with_colors(input,
-                           RSR::parameters::range_map(RSR::Position_normal_range_map(
-                                                          points, normals, 1.0, options.normal_weight * options.length_unit),
-                                                      np),
+                           np.range_map(RSR::Position_normal_range_map(points, normals, 1.0,
+                                                                       options.normal_weight * options.length_unit)),
                            options, output);
   if(options.map == "position-normal-color" || options.map == "position-normal-color-gradient") {
     const auto found = find_vertex_colors(input);
@@ -677,71 +754,22 @@ RSR::Remesh_statistics remesh(const Mesh& input, const Input_normals& normals, d
     // gradients of sharp colour edges reach 1 / (edge length): a smaller default
     const double wc = options.color_weight >= 0 ? options.color_weight : (gradient ? 0.01 : 1.0);
     if(options.map == "position-normal-color")
-      return run_with_colors(input,
-                             RSR::parameters::range_map(RSR::Position_normal_color_range_map(
-                                                            points, normals, *found, 1.0, wn, wc * unit),
-                                                        np),
-                             options, output);
+      return run_with_colors(
+          input, np.range_map(RSR::Position_normal_color_range_map(points, normals, *found, 1.0, wn, wc * unit)),
+          options, output);
     // gradient magnitudes are colour per length: one more length unit
     const RSR::Color_gradient_magnitude_map<Mesh, Color_map> gradients(input, *found);
-    return run_with_colors(input,
-                           RSR::parameters::range_map(RSR::Position_normal_color_range_map(
-                                                          points, normals, gradients, 1.0, wn, wc * unit * unit),
-                                                      np),
-                           options, output);
-  }
-  if(options.map == "view")
     return run_with_colors(
         input,
-        RSR::parameters::range_map(
-            RSR::View_range_map<boost::property_map<Mesh, CGAL::vertex_point_t>::const_type>(
-                get(CGAL::vertex_point, input), options.camera, options.depth_weight),
-            np),
+        np.range_map(RSR::Position_normal_color_range_map(points, normals, gradients, 1.0, wn, wc * unit * unit)),
         options, output);
-  return run_with_colors(input, np, options, output);
-}
-
-/// Chooses the cell size so that the output has about `target` vertices: the count
-/// goes roughly as 1/h^2, refined by a few secant steps in log-log scale.
-double cell_size_for_target(const Mesh& input, const Input_normals& normals, double start, const Options& options,
-                            Mesh& output, RSR::Remesh_statistics& stats)
-{
-  double h = start;
-  double previous_h = 0, previous_log_n = 0;
-  const double log_target = std::log(double(options.target_vertices));
-  for(int iteration = 0; iteration < 12; ++iteration) {
-    stats = remesh(input, normals, h, options, output);
-    const double n = double(std::max<std::size_t>(num_vertices(output), 1));
-    if(std::abs(n - options.target_vertices) <= 0.1 * options.target_vertices)
-      return h;
-    double slope = -2; // d log n / d log h
-    if(previous_h > 0) {
-      const double s = (std::log(n) - previous_log_n) / (std::log(h) - std::log(previous_h));
-      if(std::isfinite(s) && s < -0.5 && s > -4)
-        slope = s;
-    }
-    previous_h = h;
-    previous_log_n = std::log(n);
-    h = std::exp(std::log(h) + (log_target - std::log(n)) / slope);
   }
-  fail("could not reach " + std::to_string(options.target_vertices) +
-       " output vertices within 10% (last try: " + std::to_string(num_vertices(output)) + ")");
-}
-
-/// `remesh()`; with --preserve-topology and the dual output, the cell size is also
-/// refined (from the one the primal needed) until the dual has no parallel edges
-/// left, which a mesh file could not store, nor any undone by joining two faces into a
-/// face that is not a quad: the topology is kept for the file too, in quads.
-RSR::Remesh_statistics remesh_preserving_topology(const Mesh& input, const Input_normals& normals, double h,
-                                                  const Options& options, Mesh& output)
-{
-  RSR::Remesh_statistics stats = remesh(input, normals, h, options, output);
-  for(int refinement = 0; options.preserve_topology && options.output_kind != "primal" &&
-                          stats.dual.parallel_edges + stats.dual.joined_parallel_edges + stats.dual.dropped_pieces > 0 &&
-                          refinement < 10;
-      ++refinement)
-    stats = remesh(input, normals, stats.primal.cell_size * std::sqrt(0.5), options, output);
-  return stats;
+  if(options.map == "view")
+    return run_with_colors(input,
+                           np.range_map(RSR::View_range_map<boost::property_map<Mesh, CGAL::vertex_point_t>::const_type>(
+                               get(CGAL::vertex_point, input), options.camera, options.depth_weight)),
+                           options, output);
+  return run_with_colors(input, np, options, output);
 }
 
 /// The input faces where the topology check found defects, as a mesh.
@@ -900,6 +928,7 @@ int main(int argc, char** argv)
   // dealt with by the program; keep stderr to the one-line error contract.
   CGAL::set_warning_handler([](const char*, const char*, const char*, int, const char*) {});
   rsr_io::remove_temporary_files_on_signals();
+  std::signal(SIGINT, cancel_on_interrupt);
   try {
     Options options = parse_arguments(argc, argv);
     if(!is_supported_format(options.output))
@@ -939,11 +968,22 @@ int main(int argc, char** argv)
     const bool uses_normals = options.map == "gauss" || options.map.rfind("position-normal", 0) == 0;
     const Input_normals normals(input, uses_normals && !options.seeded);
     Mesh output;
+    Progress_line progress(options);
+    options.progress = &progress;
     RSR::Remesh_statistics stats;
-    if(options.target_vertices > 0)
-      h = cell_size_for_target(input, normals, h, options, output, stats);
-    else
-      stats = remesh_preserving_topology(input, normals, h, options, output);
+    try {
+      stats = remesh(input, normals, h, options, output);
+    } catch(const RSR::Remeshing_cancelled&) {
+      progress.clear();
+      if(interrupted)
+        throw;
+      std::ostringstream message;
+      message << "the time limit of " << progress.limit() << " s was reached: nothing was written";
+      fail(message.str());
+    }
+    progress.clear();
+    if(options.target_vertices > 0) // the size found
+      h = stats.primal.cell_size;
     if(num_faces(output) == 0)
       fail("the remesh is empty: at this cell size the surface is not resolved (" +
            std::to_string(stats.primal.dropped_pieces + stats.dual.dropped_pieces) +
@@ -979,9 +1019,12 @@ int main(int argc, char** argv)
   } catch(const Failure& f) {
     std::cerr << "range_space_remesh: " << f.message << std::endl;
   } catch(const RSR::Remeshing_error& e) {
-    const std::string message = e.what();
-    const bool capped = message.find("the cap of") != std::string::npos;
-    std::cerr << "range_space_remesh: " << message
+    if(e.kind() == RSR::Remeshing_error::Kind::CANCELLED) {
+      std::cerr << "range_space_remesh: interrupted: nothing was written" << std::endl;
+      return 130;
+    }
+    const bool capped = e.kind() == RSR::Remeshing_error::Kind::OUTPUT_TOO_LARGE;
+    std::cerr << "range_space_remesh: " << e.what()
               << (capped ? " (use a larger --cell-size, or raise the cap with --max-vertices)" : "") << std::endl;
   } catch(const std::bad_alloc&) {
     std::cerr << "range_space_remesh: out of memory" << std::endl;

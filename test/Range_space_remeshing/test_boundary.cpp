@@ -176,9 +176,8 @@ void check_dual_pipeline(const Open_case& c)
   Mesh quads;
   auto planes = quads.add_property_map<Mesh::Vertex_index, RSR::Tangent_planes>("v:planes").first;
   auto dual_normals = quads.add_property_map<Mesh::Vertex_index, Vector>("v:normal").first;
-  const auto dual = RSR::dualize(primal, quads, RSR::parameters::dual_placement(RSR::Dual_placement::QEM,
-                                                                                params::vertex_normal_map(normals)),
-                                 RSR::parameters::vertex_tangent_planes_map(planes, params::vertex_normal_map(dual_normals)));
+  const auto dual = RSR::dualize(primal, quads, RSR::parameters::dual_placement(RSR::Dual_placement::QEM).vertex_normal_map(normals),
+                                 RSR::parameters::vertex_tangent_planes_map(planes).vertex_normal_map(dual_normals));
   const std::size_t cycles = number_of_border_cycles(c.mesh) - primal_stats.uncrossed_border_cycles;
   CHECK(CGAL::is_valid_polygon_mesh(quads));
   // all quads, but where a pair of parallel edges was undone by joining its two faces
@@ -200,7 +199,7 @@ void check_dual_pipeline(const Open_case& c)
         break;
       }
   const auto collapse = RSR::collapse_quads(
-      quads, RSR::parameters::vertex_tangent_planes_map(planes, params::vertex_normal_map(dual_normals)));
+      quads, RSR::parameters::vertex_tangent_planes_map(planes).vertex_normal_map(dual_normals));
   CHECK(CGAL::is_valid_polygon_mesh(quads));
   CHECK(non_quads(quads) <= dual.joined_parallel_edges);
   CHECK(border_points(quads) == fixed_border);
@@ -209,8 +208,7 @@ void check_dual_pipeline(const Open_case& c)
   // undoes them, and the collapse must not add any
   CHECK_EQ(RSR::internal::number_of_parallel_edges(quads), std::size_t(0));
 
-  RSR::relax_on_tangent_planes(quads, RSR::parameters::vertex_tangent_planes_map(
-                                          planes, params::vertex_normal_map(dual_normals)));
+  RSR::relax_on_tangent_planes(quads, RSR::parameters::vertex_tangent_planes_map(planes).vertex_normal_map(dual_normals));
   const double relaxed_border = border_hausdorff(c.mesh, quads) / c.h;
   std::size_t regular = 0, inner = 0;
   for(auto v : vertices(quads))
@@ -253,7 +251,7 @@ void test_relax_open_square()
     return longest / shortest;
   };
   const double before = spread(m);
-  RSR::relax_on_tangent_planes(m, params::number_of_iterations(10));
+  RSR::relax_on_tangent_planes(m, RSR::parameters::number_of_relaxation_steps(10));
   const double after = spread(m);
   std::cout << "open square relaxed: edge-length ratio " << before << " -> " << after << std::endl;
   CHECK(after < before);

@@ -595,6 +595,30 @@ if(NOT code EQUAL 0 OR json_error OR NOT odd_input STREQUAL odd_name)
   math(EXPR failures "${failures} + 1")
 endif()
 
+# ------------------------------------------------------------ progress and stopping
+# --quiet is accepted; stderr is no terminal here: no progress line, nothing on stderr
+run(0 quiet.off --quiet ${elephant} quiet.off)
+run(0 progress.off ${elephant} progress.off)
+if(NOT err STREQUAL "")
+  message(SEND_ERROR "a run whose stderr is no terminal wrote on it: ${err}")
+  math(EXPR failures "${failures} + 1")
+endif()
+# --time-limit: the run stops at the library's first report, exit 2, nothing written
+run(2 timed.off --time-limit 1e-9 ${elephant} timed.off)
+expect_message("time limit of 1e-09 s was reached" "--time-limit")
+run(2 NONE --time-limit 0 ${elephant} timed.off)
+# Ctrl-C (SIGINT) during a run of about a second: cancelled cleanly, exit 130, one
+# line, no file (a signal during the reading cancels at the remesh's first report)
+execute_process(COMMAND timeout --preserve-status -s INT 0.3 ${CLI} --cell-size 0.003
+                        ${MESH_DIR}/refined_elephant.off interrupted.off
+                RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err WORKING_DIRECTORY ${WORK_DIR})
+file(GLOB leftovers ${WORK_DIR}/.rsr-*)
+if(NOT code EQUAL 130 OR NOT err MATCHES "^range_space_remesh: interrupted[^\n]*\n$" OR EXISTS ${WORK_DIR}/interrupted.off
+   OR leftovers)
+  message(SEND_ERROR "SIGINT: exit ${code}, stderr '${err}', leftovers '${leftovers}'")
+  math(EXPR failures "${failures} + 1")
+endif()
+
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} command-line check(s) failed")
 endif()

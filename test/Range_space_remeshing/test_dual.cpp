@@ -96,8 +96,8 @@ Dual_run dual_of(const Mesh& primal, Mesh::Property_map<Mesh::Vertex_index, Vect
   auto planes = run.quads.add_property_map<Mesh::Vertex_index, RSR::Tangent_planes>("v:planes").first;
   auto dual_normals = run.quads.add_property_map<Mesh::Vertex_index, Vector>("v:normal").first;
   run.stats = RSR::dualize(primal, run.quads,
-                           RSR::parameters::dual_placement(placement, params::vertex_normal_map(normals)),
-                           RSR::parameters::vertex_tangent_planes_map(planes, params::vertex_normal_map(dual_normals)));
+                           RSR::parameters::dual_placement(placement).vertex_normal_map(normals),
+                           RSR::parameters::vertex_tangent_planes_map(planes).vertex_normal_map(dual_normals));
   CHECK(CGAL::is_valid_polygon_mesh(run.quads));
   CHECK(CGAL::is_closed(run.quads));
   CHECK_EQ(run.stats.non_quads, std::size_t(0));
@@ -163,8 +163,7 @@ void check_input(const std::string& name, const Mesh& input, double relative_cel
   auto collapsed_planes = existing_property_map<Mesh::Vertex_index, RSR::Tangent_planes>(collapsed, "v:planes");
   auto collapsed_normals = existing_property_map<Mesh::Vertex_index, Vector>(collapsed, "v:normal");
   const RSR::Collapse_statistics cs = RSR::collapse_quads(
-      collapsed, RSR::parameters::vertex_tangent_planes_map(
-                     collapsed_planes, params::vertex_normal_map(collapsed_normals)));
+      collapsed, RSR::parameters::vertex_tangent_planes_map(collapsed_planes).vertex_normal_map(collapsed_normals));
   check_collapsed(qem.quads, collapsed, cs);
   const Distance d_collapsed = distance_to(input, collapsed);
   Mesh without_rotations = qem.quads;
@@ -184,8 +183,7 @@ void check_input(const std::string& name, const Mesh& input, double relative_cel
   Mesh relaxed = collapsed;
   auto planes = existing_property_map<Mesh::Vertex_index, RSR::Tangent_planes>(relaxed, "v:planes");
   auto dual_normals = existing_property_map<Mesh::Vertex_index, Vector>(relaxed, "v:normal");
-  RSR::relax_on_tangent_planes(relaxed, RSR::parameters::vertex_tangent_planes_map(
-                                            planes, params::number_of_iterations(3).vertex_normal_map(dual_normals)));
+  RSR::relax_on_tangent_planes(relaxed, RSR::parameters::vertex_tangent_planes_map(planes).number_of_relaxation_steps(3).vertex_normal_map(dual_normals));
   CHECK(CGAL::is_valid_polygon_mesh(relaxed));
   const double volume_before = signed_volume(collapsed);
   const double volume_after = signed_volume(relaxed);
@@ -548,7 +546,7 @@ void test_relax_keeps_faces_unfolded()
     }
     for(auto w : {a, b, c, d, e, f, g, h})
       planes[w].push_back({{{ring.point(w).x(), ring.point(w).y(), 0}}, {{0, 0, 1}}});
-    RSR::relax_on_tangent_planes(ring, RSR::parameters::vertex_tangent_planes_map(planes).number_of_iterations(1));
+    RSR::relax_on_tangent_planes(ring, RSR::parameters::vertex_tangent_planes_map(planes).number_of_relaxation_steps(1));
     int folded = 0;
     for(auto face : faces(ring)) {
       std::vector<Point> corners;
@@ -572,7 +570,7 @@ void test_relax_keeps_faces_unfolded()
     // planes' points on a line, as inside an opened crease) stays where it is.
     ring.point(v) = Point(0, 0, 0);
     planes[v] = {{{{-0.5, 0, 0}}, {{0, 0, 1}}}, {{{0.5, 0, 0}}, {{0, 0, 1}}}, {{{0.2, 0, 0}}, {{0, 0, 1}}}};
-    RSR::relax_on_tangent_planes(ring, RSR::parameters::vertex_tangent_planes_map(planes).number_of_iterations(1));
+    RSR::relax_on_tangent_planes(ring, RSR::parameters::vertex_tangent_planes_map(planes).number_of_relaxation_steps(1));
     CHECK(ring.point(v) == Point(0, 0, 0));
   }
 }
@@ -606,7 +604,7 @@ void test_relax_on_cube()
       on_sides += on_boundary(x);
     inside_a_side.push_back(on_sides == 1);
   }
-  RSR::relax_on_tangent_planes(cube, params::number_of_iterations(5));
+  RSR::relax_on_tangent_planes(cube, RSR::parameters::number_of_relaxation_steps(5));
   // distance from the cube's surface, for vertices inside a side and on its edges
   double worst_side = 0, worst_edge = 0;
   for(auto v : vertices(cube)) {
@@ -835,9 +833,11 @@ void test_fandisk_creases(const Mesh& fandisk)
       const double h = std::sqrt(low * high);
       quads.clear();
       RSR::remesh(input, quads,
-                  RSR::parameters::dual_placement(
-                      placement, RSR::parameters::quad_collapse(
-                                     false, RSR::parameters::range_map(f).grid_spacing(h).number_of_relaxation_steps(0))));
+                  RSR::parameters::dual_placement(placement)
+                      .quad_collapse(false)
+                      .range_map(f)
+                      .grid_spacing(h)
+                      .number_of_relaxation_steps(0));
       const double ratio = double(num_vertices(quads)) / double(target);
       if(std::abs(ratio - 1) < 0.03)
         break;

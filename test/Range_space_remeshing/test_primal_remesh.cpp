@@ -191,7 +191,7 @@ void test_determinism_and_seeding()
     const std::vector<Mesh::Face_index> seeds(1, first_face);
     const auto seeded_stats = RSR::primal_remesh(
         sphere_and_quad, from_seed,
-        RSR::parameters::seed_faces(seeds, params::grid_spacing(0.25).seeding_method(RSR::Seeding_method::SEEDED)));
+        RSR::parameters::seed_faces(seeds).grid_spacing(0.25).seeding_method(RSR::Seeding_method::SEEDED));
     remesh_and_check(make_sphere(1.0, 3), whole_sphere, params::grid_spacing(0.25));
     CHECK_EQ(num_vertices(from_seed), num_vertices(whole_sphere)); // (created in another order)
     CHECK_EQ(num_faces(from_seed), num_faces(whole_sphere));
@@ -221,8 +221,7 @@ void test_determinism_and_seeding()
 
   // the grid origin shifts the lattice
   Mesh shifted;
-  remesh_and_check(fine, shifted, grid_origin(std::array<double, 3>{{0.1, 0.05, 0.0}},
-                                              params::grid_spacing(0.25)));
+  remesh_and_check(fine, shifted, grid_origin(std::array<double, 3>{{0.1, 0.05, 0.0}}).grid_spacing(0.25));
   CHECK_EQ(euler_characteristic(shifted), 2L);
   CHECK(fingerprint(shifted) != fingerprint(out));
 }

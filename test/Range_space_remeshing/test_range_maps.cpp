@@ -398,7 +398,7 @@ void check_primal_normals_on_creases(const Mesh& creased)
   auto crease_normals = primal.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:crease_normal").first;
   RSR::primal_remesh(creased, primal,
                      RSR::parameters::range_map(RSR::make_position_normal_range_map(creased, 1.0, 2.0)).grid_spacing(0.37),
-                     RSR::parameters::vertex_crease_normal_map(crease_normals, params::vertex_normal_map(normals)));
+                     RSR::parameters::vertex_crease_normal_map(crease_normals).vertex_normal_map(normals));
   auto is_axis = [](const K::Vector_3& n) {
     return std::abs(std::abs(n.x()) + std::abs(n.y()) + std::abs(n.z()) - 1) < 1e-12 &&
            std::abs(n.squared_length() - 1) < 1e-12;
@@ -514,11 +514,11 @@ void test_one_pass_normals()
   const RSR::Position_normal_range_map precomputed(get(CGAL::vertex_point, ellipsoid), normals, 1.0, 2.0);
   Mesh from_lazy, from_precomputed;
   RSR::primal_remesh(ellipsoid, from_lazy,
-                     RSR::parameters::grid_origin(
-                         origin, RSR::parameters::range_map(RSR::make_position_normal_range_map(ellipsoid, 1.0, 2.0))
-                                     .grid_spacing(0.3)));
+                     RSR::parameters::grid_origin(origin)
+                         .range_map(RSR::make_position_normal_range_map(ellipsoid, 1.0, 2.0))
+                         .grid_spacing(0.3));
   RSR::primal_remesh(ellipsoid, from_precomputed,
-                     RSR::parameters::grid_origin(origin, RSR::parameters::range_map(precomputed).grid_spacing(0.3)));
+                     RSR::parameters::grid_origin(origin).range_map(precomputed).grid_spacing(0.3));
   CHECK(num_vertices(from_lazy) > 100);
   CHECK_EQ(fingerprint(from_lazy), fingerprint(from_precomputed));
 

@@ -126,8 +126,7 @@ Checked_run run_checked_with(const Mesh& input, const NamedParameters& base, boo
 {
   Checked_run run;
   auto collect = [&](const Defect& d) { run.defects.push_back(d); };
-  const auto np = RSR::parameters::check_topology(
-      true, RSR::parameters::preserve_topology(preserve, RSR::parameters::topology_visitor(collect, base)));
+  const auto np = base.check_topology(true).preserve_topology(preserve).topology_visitor(collect);
   run.stats = remesh_and_check(input, run.output, np);
   CHECK(run.stats.topology_checked);
   CHECK_EQ(run.stats.output_euler_characteristic, euler_characteristic(run.output));
@@ -152,7 +151,7 @@ Checked_run run_checked_with(const Mesh& input, const NamedParameters& base, boo
 
 Checked_run run_checked(const Mesh& input, double cell_size, bool preserve = false)
 {
-  return run_checked_with(input, params::grid_spacing(cell_size), preserve);
+  return run_checked_with(input, RSR::parameters::grid_spacing(cell_size), preserve);
 }
 
 void print(const char* name, double cell_size, const RSR::Statistics& s)
@@ -193,7 +192,7 @@ void test_parallel_scan_agrees(const Mesh& mesh, double cell_size)
 {
 #if defined(CGAL_LINKED_WITH_TBB)
   Mesh sequential, parallel;
-  const auto np = RSR::parameters::check_topology(true, params::grid_spacing(cell_size));
+  const auto np = RSR::parameters::check_topology(true).grid_spacing(cell_size);
   const RSR::Statistics s = RSR::primal_remesh(mesh, sequential, np);
   const RSR::Statistics p = RSR::primal_remesh<CGAL::Parallel_tag>(mesh, parallel, np);
   CHECK(p.topology_checked);
@@ -220,7 +219,7 @@ void test_barbell()
   // the whole pipeline passes preserve_topology on: the quads have it too
   Mesh quads;
   const RSR::Remesh_statistics stats =
-      RSR::remesh(barbell, quads, RSR::parameters::preserve_topology(true, params::grid_spacing(0.5)));
+      RSR::remesh(barbell, quads, RSR::parameters::preserve_topology(true).grid_spacing(0.5));
   CHECK(stats.primal.topology_preserved());
   CHECK(CGAL::is_valid_polygon_mesh(quads));
   CHECK_EQ(euler_characteristic(quads), 2);

@@ -79,14 +79,12 @@ void test_snapped_meshes()
     check_all(what + " (x,y,z,x,c)", m,
               RSR::parameters::range_map(appended<5>(m, [c](const Point& p, std::array<double, 5>& x) {
                                            x = {{p.x(), p.y(), p.z(), p.x(), c}};
-                                         }),
-                                         params::grid_spacing(h)));
+                                         })).grid_spacing(h));
     // a map whose image is a line: every triangle degenerate in the range space
     check_all(what + " (x,x,x)", m,
               RSR::parameters::range_map(appended<3>(m, [](const Point& p, std::array<double, 3>& x) {
                                            x = {{p.x(), p.x(), p.x()}};
-                                         }),
-                                         params::grid_spacing(h)));
+                                         })).grid_spacing(h));
   }
 }
 
@@ -126,8 +124,7 @@ void test_voxel_terrains()
     check_all(what, m, params::grid_spacing(h));
     const double half = h / 2;
     check_all(what + " (origin at half a cell)", m,
-              RSR::parameters::grid_origin(RSR::Range_space_traits<3>::Point_d{{half, 0., half}},
-                                           params::grid_spacing(h)));
+              RSR::parameters::grid_origin(RSR::Range_space_traits<3>::Point_d{{half, 0., half}}).grid_spacing(h));
   }
   CHECK(made >= 6);
 }

@@ -15,17 +15,54 @@ namespace Range_space_remeshing {
 /*!
 \ingroup PkgRangeSpaceRemeshingRef
 
-Thrown by the functions of the package when their input is unusable: an empty
-mesh, a face that is not a triangle, a border where a closed surface is required
-(`insert_crease_triangles()`),
-a NaN or infinite map value, a non-positive or non-finite cell size, a grid so fine
-that the range coordinates overflow or the output cap would be exceeded.
-`what()` names the problem in one line.
+Thrown by the functions of the package when they cannot do what is asked. `what()`
+names the problem in one line; `kind()` tells the caller what to do about it.
 */
 class Remeshing_error : public std::runtime_error
 {
 public:
-  explicit Remeshing_error(const std::string& message) : std::runtime_error(message) {}
+  /// What went wrong.
+  enum class Kind
+  {
+    /// The input is unusable: an empty mesh, a face that is not a triangle, a border
+    /// where a closed surface is required (`insert_crease_triangles()`), a NaN or
+    /// infinite coordinate or map value, a soup that cannot be made a mesh.
+    BAD_INPUT,
+    /// A parameter is out of its domain: a non-positive or non-finite cell size, a
+    /// non-finite grid origin, an impossible camera, parameters that exclude each other.
+    BAD_PARAMETER,
+    /// The output would exceed the cap on its vertices (`maximum_number`), or the grid
+    /// is so fine that range coordinates would overflow: a larger cell size is needed.
+    OUTPUT_TOO_LARGE,
+    /// `preserve_topology`: no cell size tried keeps the input's topology.
+    TOPOLOGY_NOT_PRESERVED,
+    /// `number_of_target_vertices`: no cell size tried gives the count within 10%.
+    TARGET_NOT_REACHED,
+    /// The `progress_visitor` asked to stop (the exception is a `Remeshing_cancelled`).
+    CANCELLED
+  };
+
+  explicit Remeshing_error(const std::string& message, Kind kind = Kind::BAD_INPUT)
+    : std::runtime_error(message), kind_(kind)
+  {}
+
+  /// What went wrong.
+  Kind kind() const { return kind_; }
+
+private:
+  Kind kind_;
+};
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
+Thrown when the `progress_visitor` returns `false`. The function's output mesh is then
+left empty (see each function).
+*/
+class Remeshing_cancelled : public Remeshing_error
+{
+public:
+  Remeshing_cancelled() : Remeshing_error("the run was cancelled", Kind::CANCELLED) {}
 };
 
 } // namespace Range_space_remeshing

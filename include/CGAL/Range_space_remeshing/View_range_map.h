@@ -42,7 +42,8 @@ inline Camera make_look_at_camera(const std::array<double, 3>& eye, const std::a
   if(!(dot(back, back) > 0) || !(dot(right, right) > 0) || !(fov_degrees > 0 && fov_degrees < 180) ||
      !(width > 0 && height > 0))
     throw Remeshing_error("camera: eye and target must differ, up must not be along the view, the field "
-                          "of view must be between 0 and 180 degrees and the viewport positive");
+                          "of view must be between 0 and 180 degrees and the viewport positive",
+                          Remeshing_error::Kind::BAD_PARAMETER);
   const double f = 1 / std::tan(fov_degrees * 3.14159265358979323846 / 360), aspect = width / height;
   // projection without near/far clipping terms: the third row keeps the view depth
   const std::array<Vec3, 3> rows = {{right, true_up, back}};

@@ -7,6 +7,7 @@
 #define CGAL_RANGE_SPACE_REMESHING_COPY_IN_SPATIAL_ORDER_H
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
@@ -54,10 +55,31 @@ copy them.
 \tparam PolygonMeshOut a model of `MutableFaceGraph` and `VertexListGraph`.
 \param tm the mesh to copy: a valid polygon mesh.
 \param out receives the copy.
-\param np_in `vertex_point_map`; `vertex_to_vertex_map` (writable, vertex of `tm` ->
-  vertex of `out`) and `face_to_face_map` (writable, face of `tm` -> face of `out`) are
-  written when given.
-\param np_out `vertex_point_map` of `out`.
+\param np_in optional named parameters for `tm`:
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_to_vertex_map}
+      \cgalParamDescription{receives, for each vertex of `tm`, its copy}
+      \cgalParamType{a writable property map, vertex of `tm` -> vertex of `out`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{face_to_face_map}
+      \cgalParamDescription{receives, for each face of `tm`, its copy}
+      \cgalParamType{a writable property map, face of `tm` -> face of `out`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_index_map}
+      \cgalParamDefault{the mesh's, or one made for the run}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+\param np_out optional named parameters for `out`:
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDefault{`get(CGAL::vertex_point, out)`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
 \throws Remeshing_error if a point of a face has a NaN or infinite coordinate (`out`
   is then unchanged), or if a face of `tm` cannot be added to `out` (`tm` is not a
   valid polygon mesh; `out` then holds a part of the copy).
@@ -70,6 +92,12 @@ void copy_in_spatial_order(const PolygonMesh& tm, PolygonMeshOut& out,
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
+  static_assert(internal::check_named_parameters<struct copy_in_spatial_order_in, NamedParametersIn,
+                                                 CGAL::internal_np::vertex_point_t, CGAL::internal_np::vertex_index_t,
+                                                 CGAL::internal_np::vertex_to_vertex_map_t,
+                                                 CGAL::internal_np::face_to_face_map_t>());
+  static_assert(internal::check_named_parameters<struct copy_in_spatial_order_out, NamedParametersOut,
+                                                 CGAL::internal_np::vertex_point_t>());
   using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
   using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
   using out_vertex = typename boost::graph_traits<PolygonMeshOut>::vertex_descriptor;

@@ -14,6 +14,7 @@
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Pooled_tangent_planes_map.h>
 #include <CGAL/Range_space_remeshing/internal/Polygon_kernel.h>
+#include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 #include <CGAL/Range_space_remeshing/internal/Union_find.h>
 
@@ -517,58 +518,12 @@ edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index, const HasD
 
 } // namespace internal
 
-/*!
-\ingroup PkgRangeSpaceRemeshingRef
+namespace internal {
 
-builds the dual of the polygon mesh `primal` into `quads`: one vertex per primal
-face, one face per primal vertex (its incident faces in rotation order). When every
-primal vertex has valence 4, as in the output of `primal_remesh()`, every dual face is
-a quad. The ends of merged digons (valence 3, or 2 for a vertex in two digons) give
-triangles and 2-gons; they are joined across the merged edges into quads. Where two
-primal faces share two edges (around parts thinner than a cell), their dual vertices
-are joined by two parallel edges, which face-list files cannot store: a pair around a
-pinch (two triangles around a dual vertex of valence 2, the dual of a digon between
-the two faces) is glued into one edge and the pinch removed
-(`Dual_statistics::removed_pinches`); a pair between two quads has one of its edges
-rotated; a pair neither undoes loses one edge by joining its two faces where that
-gives a simple polygon (`Dual_statistics::joined_parallel_edges`); what is left is
-counted in `Dual_statistics::parallel_edges`.
-
-On a border (paper, section 7), the primal border is cut into chains at its vertices
-of valence 3 or more (the regular valence there, as from `primal_remesh()`); each
-chain has a dual vertex half-way along it, on the primal border, and each such border
-vertex a dual face closed by a dual border edge between the dual vertices of its two
-chains: a quad for valence 3. The dual so has the primal's Euler characteristic and
-border cycles, and its border lies on the primal's: it cannot shrink away from it.
-Border vertices of valence 2 inside a chain have no dual face (but one, a triangle,
-where a border cycle would otherwise have a single chain), and a face whose vertices
-all lack one (a piece made of one face) has no dual; it counts as a dropped piece.
-
-The dual vertex of a primal face is placed at the average of the face's vertices
-(`Dual_placement::AVERAGE`) or at the minimiser of the squared distances to their
-tangent planes (`Dual_placement::QEM`, the default), solved by a truncated
-eigen-decomposition around the average so that flat and rank-deficient faces stay
-well placed. Its normal is the normalised average of the vertices' normals.
-
-\param primal a polygon mesh (any `FaceListGraph`), with or without border.
-\param quads receives the dual (appended); a `MutableFaceGraph`.
-\param np_in `vertex_point_map`, `vertex_normal_map` (unit normals of the primal
-  vertices; default: computed from the mesh), `vertex_crease_normal_map` (from
-  `primal_remesh()`: a vertex inside an opened crease adds the tangent plane of the
-  crease's other side to its faces' planes), `dual_placement`, `vertex_color_map`
-  (colours of the primal vertices, `CGAL::IO::Color` or triples in [0, 1]).
-\param np_out `vertex_point_map`, `vertex_normal_map` (receives the dual normals),
-  `vertex_color_map` (receives the average colour of each primal face),
-  `vertex_tangent_planes_map` (receives each dual vertex's `Tangent_planes`, which
-  `relax_on_tangent_planes()` uses).
-\throws Remeshing_error if `primal` is empty.
-*/
-template <class PolygonMesh, class QuadMesh,
-          class NamedParametersIn = CGAL::parameters::Default_named_parameters,
-          class NamedParametersOut = CGAL::parameters::Default_named_parameters>
-Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
-                        const NamedParametersIn& np_in = CGAL::parameters::default_values(),
-                        const NamedParametersOut& np_out = CGAL::parameters::default_values())
+/// The body of `dualize()`.
+template <class PolygonMesh, class QuadMesh, class NamedParametersIn, class NamedParametersOut>
+Dual_statistics build_dual(const PolygonMesh& primal, QuadMesh& quads, const NamedParametersIn& np_in,
+                           const NamedParametersOut& np_out, const Progress& progress)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -723,8 +678,10 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     return dv;
   };
   std::vector<dual_vertex> dual_of_face(num_faces(primal));
-  std::optional<internal::Decomposed_quadric> decomposed;
+  std::optional<Decomposed_quadric> decomposed;
+  std::size_t placed_faces = 0;
   for(auto f : faces(primal)) {
+    progress.report_every(Remeshing_stage::DUAL, placed_faces++, 2 * num_faces(primal)); // half the work
     planes.clear();
     color_sources.clear();
     for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, primal), primal)) {
@@ -820,6 +777,7 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
   // The dual faces; a border vertex's is closed by a dual edge from the dual vertex
   // of the chain leaving it to that of the chain arriving, whose opposite is on the
   // dual border.
+  progress.report(Remeshing_stage::DUAL, 0.6);
   const auto null_face = boost::graph_traits<QuadMesh>::null_face();
   std::vector<dual_halfedge> closing_of_vertex(num_vertices(primal)); // dual face's border side
   for(vertex_descriptor v : vertices(primal)) {
@@ -880,6 +838,7 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     }
   }
 
+  progress.report(Remeshing_stage::DUAL, 0.8);
   // Where the primal has vertices of valence 3 and 2 (the ends of merged digons),
   // join the dual faces across the primal edges chosen by `edges_to_join()`: each
   // group of joined faces then has exactly four corners.
@@ -903,6 +862,128 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
     (degree(f, quads) == 4 ? stats.quads : stats.non_quads) += 1;
   stats.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return stats;
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
+builds the dual of the polygon mesh `primal` into `quads`: one vertex per primal
+face, one face per primal vertex (its incident faces in rotation order). When every
+primal vertex has valence 4, as in the output of `primal_remesh()`, every dual face is
+a quad. The ends of merged digons (valence 3, or 2 for a vertex in two digons) give
+triangles and 2-gons; they are joined across the merged edges into quads. Where two
+primal faces share two edges (around parts thinner than a cell), their dual vertices
+are joined by two parallel edges, which face-list files cannot store: a pair around a
+pinch (two triangles around a dual vertex of valence 2, the dual of a digon between
+the two faces) is glued into one edge and the pinch removed
+(`Dual_statistics::removed_pinches`); a pair between two quads has one of its edges
+rotated; a pair neither undoes loses one edge by joining its two faces where that
+gives a simple polygon (`Dual_statistics::joined_parallel_edges`); what is left is
+counted in `Dual_statistics::parallel_edges`.
+
+On a border (paper, section 7), the primal border is cut into chains at its vertices
+of valence 3 or more (the regular valence there, as from `primal_remesh()`); each
+chain has a dual vertex half-way along it, on the primal border, and each such border
+vertex a dual face closed by a dual border edge between the dual vertices of its two
+chains: a quad for valence 3. The dual so has the primal's Euler characteristic and
+border cycles, and its border lies on the primal's: it cannot shrink away from it.
+Border vertices of valence 2 inside a chain have no dual face (but one, a triangle,
+where a border cycle would otherwise have a single chain), and a face whose vertices
+all lack one (a piece made of one face) has no dual; it counts as a dropped piece.
+
+The dual vertex of a primal face is placed at the average of the face's vertices
+(`Dual_placement::AVERAGE`) or at the minimiser of the squared distances to their
+tangent planes (`Dual_placement::QEM`, the default), solved by a truncated
+eigen-decomposition around the average so that flat and rank-deficient faces stay
+well placed. Its normal is the normalised average of the vertices' normals.
+
+\param primal a polygon mesh (any `FaceListGraph`), with or without border.
+\param quads receives the dual (appended); a `MutableFaceGraph`.
+\param np_in optional named parameters for `primal`:
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{dual_placement}
+      \cgalParamDescription{where the dual vertices go}
+      \cgalParamType{`Dual_placement`}
+      \cgalParamDefault{`Dual_placement::QEM`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_normal_map}
+      \cgalParamDescription{unit normals of the primal vertices}
+      \cgalParamType{a readable property map, vertex -> 3-D vector}
+      \cgalParamDefault{computed from the mesh}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_crease_normal_map}
+      \cgalParamDescription{from `primal_remesh()`: a vertex inside an opened crease adds the tangent plane of the crease's other side to its faces' planes}
+      \cgalParamType{a readable property map, vertex -> 3-D vector}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_color_map}
+      \cgalParamDescription{colours of the primal vertices}
+      \cgalParamType{a readable property map, vertex -> `CGAL::IO::Color` or triples in [0, 1]}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{progress_visitor}
+      \cgalParamDescription{told how far the run is and asked whether to go on, as for `remesh()`; on cancellation `quads` is left empty}
+      \cgalParamType{a callable `bool(Remeshing_stage, double)`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDefault{`get(CGAL::vertex_point, primal)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_index_map}
+      \cgalParamDefault{the mesh's, or one made for the run}
+    \cgalParamNEnd
+    \cgalParamNBegin{face_index_map}
+      \cgalParamDefault{the mesh's, or one made for the run}
+    \cgalParamNEnd
+    \cgalParamNBegin{halfedge_index_map}
+      \cgalParamDefault{the mesh's, or one made for the run}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+\param np_out optional named parameters for `quads`:
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDefault{`get(CGAL::vertex_point, quads)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_normal_map}
+      \cgalParamDescription{receives the dual normals}
+      \cgalParamType{a writable property map, vertex -> 3-D vector}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_color_map}
+      \cgalParamDescription{receives the average colour of each primal face}
+      \cgalParamType{a writable property map}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_tangent_planes_map}
+      \cgalParamDescription{receives each dual vertex's `Tangent_planes`, which `collapse_quads()` and `relax_on_tangent_planes()` use}
+      \cgalParamType{a writable property map, vertex -> `Tangent_planes`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+\throws Remeshing_error if `primal` is empty.
+*/
+template <class PolygonMesh, class QuadMesh,
+          class NamedParametersIn = CGAL::parameters::Default_named_parameters,
+          class NamedParametersOut = CGAL::parameters::Default_named_parameters>
+Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
+                        const NamedParametersIn& np_in = CGAL::parameters::default_values(),
+                        const NamedParametersOut& np_out = CGAL::parameters::default_values())
+{
+  namespace np = internal_np;
+  namespace cgal_np = CGAL::internal_np;
+  static_assert(internal::check_named_parameters<struct dualize_in, NamedParametersIn, cgal_np::vertex_point_t,
+                                                 cgal_np::vertex_normal_map_t, np::dual_placement_t,
+                                                 np::vertex_crease_normal_map_t, cgal_np::vertex_color_map_t,
+                                                 np::progress_visitor_t, cgal_np::vertex_index_t,
+                                                 cgal_np::face_index_t, cgal_np::halfedge_index_t>());
+  static_assert(internal::check_named_parameters<struct dualize_out, NamedParametersOut, cgal_np::vertex_point_t,
+                                                 cgal_np::vertex_normal_map_t, np::vertex_tangent_planes_map_t,
+                                                 cgal_np::vertex_color_map_t>());
+  const internal::Progress progress = internal::progress_of(np_in);
+  return internal::emptied_on_cancel(
+      quads, [&] { return internal::build_dual(primal, quads, np_in, np_out, progress); });
 }
 
 } // namespace Range_space_remeshing

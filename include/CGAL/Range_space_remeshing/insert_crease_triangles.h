@@ -7,6 +7,7 @@
 #define CGAL_RANGE_SPACE_REMESHING_INSERT_CREASE_TRIANGLES_H
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -52,7 +53,17 @@ strip and the remesh places arcs along the crease.
 \param out receives the result (cleared first); a `MutableFaceGraph` of the same point type.
 \param sharp_angle_degrees an edge is a crease where the normals of its two faces make
   an angle above this (ignored if `edge_is_constrained_map` is given).
-\param np `vertex_point_map`, `edge_is_constrained_map` (edge -> bool: the creases).
+\param np optional named parameters:
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{edge_is_constrained_map}
+      \cgalParamDescription{the creases}
+      \cgalParamType{a readable property map, edge -> bool}
+      \cgalParamDefault{the edges sharper than `sharp_angle_degrees`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
 \throws Remeshing_error if `tm` is not a closed triangle mesh.
 */
 template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -66,6 +77,9 @@ Crease_statistics insert_crease_triangles(const TriangleMesh& tm, TriangleMesh& 
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   using edge_descriptor = typename boost::graph_traits<TriangleMesh>::edge_descriptor;
   using internal::Vec3;
+  static_assert(internal::check_named_parameters<struct insert_crease_triangles_np, NamedParameters,
+                                                 CGAL::internal_np::vertex_point_t,
+                                                 CGAL::internal_np::edge_is_constrained_t>());
 
   if(num_faces(tm) == 0 || !CGAL::is_triangle_mesh(tm) || !CGAL::is_closed(tm))
     throw Remeshing_error("insert_crease_triangles: the input must be a non-empty closed triangle mesh");

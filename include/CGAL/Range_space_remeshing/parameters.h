@@ -8,16 +8,16 @@
 
 // Named parameters of the package.
 //
-// CGAL's list of named-parameter tags is closed, so a package outside CGAL cannot
-// add a chainable `.range_map()` member. The package therefore
-// * reuses CGAL's tags where the meaning fits: `grid_spacing` (the cell size),
-//   `seeding_method`, `maximum_number` (cap on output vertices), `geom_traits`,
-//   `vertex_point_map`, `vertex_normal_map`;
-// * adds its own tags as free functions that start a pack, onto which CGAL's
-//   tags chain as usual: `range_map(f).grid_spacing(h)`. Each of them optionally
-//   takes an existing pack to extend: `grid_origin(o, range_map(f).grid_spacing(h))`.
+// CGAL's list of named-parameter tags is closed: a package outside CGAL cannot add a
+// member `.range_map()` to CGAL's packs. The package therefore has its own pack,
+// `parameters::Named_function_parameters`, derived from CGAL's (so that CGAL's
+// functions and `get_parameter()` read it unchanged), whose members add any parameter
+// the package reads, its own tags and CGAL's, in any order. Each public function checks
+// at compile time that it reads every parameter it is given.
 
 #include <CGAL/Named_function_parameters.h>
+
+#include <type_traits>
 
 namespace CGAL {
 namespace Range_space_remeshing {
@@ -64,64 +64,151 @@ enum dual_placement_t { dual_placement };
 enum vertex_tangent_planes_map_t { vertex_tangent_planes_map };
 enum vertex_crease_normal_map_t { vertex_crease_normal_map };
 enum quad_collapse_t { quad_collapse };
+enum number_of_collapse_passes_t { number_of_collapse_passes };
+enum number_of_target_vertices_t { number_of_target_vertices };
 enum check_topology_t { check_topology };
 enum preserve_topology_t { preserve_topology };
 enum topology_visitor_t { topology_visitor };
+enum progress_visitor_t { progress_visitor };
 } // namespace internal_np
+
+// The parameters the package reads, its own and CGAL's: the tag's namespace, the tag,
+// the name. One list, expanded into the chain's member functions and the free
+// functions that start a chain.
+#define CGAL_RANGE_SPACE_REMESHING_EACH_PARAMETER(P)                                   \
+  P(internal_np, range_map_t, range_map)                                                 \
+  P(internal_np, grid_origin_t, grid_origin)                                             \
+  P(internal_np, seed_faces_t, seed_faces)                                               \
+  P(internal_np, dual_placement_t, dual_placement)                                       \
+  P(internal_np, vertex_tangent_planes_map_t, vertex_tangent_planes_map)                 \
+  P(internal_np, vertex_crease_normal_map_t, vertex_crease_normal_map)                   \
+  P(internal_np, quad_collapse_t, quad_collapse)                                         \
+  P(internal_np, number_of_collapse_passes_t, number_of_collapse_passes)                 \
+  P(internal_np, number_of_target_vertices_t, number_of_target_vertices)                 \
+  P(internal_np, check_topology_t, check_topology)                                       \
+  P(internal_np, preserve_topology_t, preserve_topology)                                 \
+  P(internal_np, topology_visitor_t, topology_visitor)                                   \
+  P(internal_np, progress_visitor_t, progress_visitor)                                   \
+  P(CGAL::internal_np, grid_spacing_t, grid_spacing)                                     \
+  P(CGAL::internal_np, seeding_method_t, seeding_method)                                 \
+  P(CGAL::internal_np, maximum_number_t, maximum_number)                                 \
+  P(CGAL::internal_np, geom_traits_t, geom_traits)                                       \
+  P(CGAL::internal_np, do_flip_t, do_flip)                                               \
+  P(CGAL::internal_np, number_of_relaxation_steps_t, number_of_relaxation_steps)         \
+  P(CGAL::internal_np, vertex_is_constrained_t, vertex_is_constrained_map)               \
+  P(CGAL::internal_np, edge_is_constrained_t, edge_is_constrained_map)                   \
+  P(CGAL::internal_np, vertex_color_map_t, vertex_color_map)                             \
+  P(CGAL::internal_np, vertex_normal_map_t, vertex_normal_map)                           \
+  P(CGAL::internal_np, vertex_index_t, vertex_index_map)                                 \
+  P(CGAL::internal_np, face_index_t, face_index_map)                                     \
+  P(CGAL::internal_np, halfedge_index_t, halfedge_index_map)                             \
+  P(CGAL::internal_np, vertex_point_t, vertex_point_map)                                 \
+  P(CGAL::internal_np, vertex_to_vertex_map_t, vertex_to_vertex_map)                     \
+  P(CGAL::internal_np, face_to_face_map_t, face_to_face_map)
 
 namespace parameters {
 
-#define CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(NAME)                              \
-  template <class T>                                                               \
-  CGAL::Named_function_parameters<T, internal_np::NAME##_t> NAME(const T& value)     \
-  {                                                                                \
-    return CGAL::Named_function_parameters<T, internal_np::NAME##_t>(value);        \
-  }                                                                                \
-  template <class T, class NP_T, class NP_Tag, class NP_Base>                      \
-  CGAL::Named_function_parameters<T, internal_np::NAME##_t,                        \
-                                  CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>> \
-  NAME(const T& value, const CGAL::Named_function_parameters<NP_T, NP_Tag, NP_Base>& base) \
-  {                                                                                \
-    return {value, base};                                                          \
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
+A pack of named parameters: CGAL's `Named_function_parameters` (every function of CGAL
+reads it), whose member functions add any parameter the package reads, its own and
+CGAL's, in any order. A chain starts with one of the free functions of this namespace:
+`parameters::grid_spacing(h).range_map(f).vertex_point_map(vpm)`.
+*/
+template <class T, class Tag, class Base = CGAL::internal_np::No_property>
+struct Named_function_parameters : CGAL::Named_function_parameters<T, Tag, Base>
+{
+  /// \cond SKIP_IN_MANUAL
+  using CGAL_parameters = CGAL::Named_function_parameters<T, Tag, Base>;
+  using CGAL_parameters::CGAL_parameters;
+  using self = Named_function_parameters<T, Tag, Base>;
+
+#define CGAL_RANGE_SPACE_REMESHING_MEMBER(NS, TAG, NAME)                               \
+  template <class K>                                                                   \
+  Named_function_parameters<K, NS::TAG, self> NAME(const K& value) const               \
+  {                                                                                    \
+    return Named_function_parameters<K, NS::TAG, self>(value, *this);                  \
   }
+  CGAL_RANGE_SPACE_REMESHING_EACH_PARAMETER(CGAL_RANGE_SPACE_REMESHING_MEMBER)
+#undef CGAL_RANGE_SPACE_REMESHING_MEMBER
+  /// \endcond
+};
 
-/// The map f: a readable property map, vertex -> point of the range space
-/// (`std::array<double, D>`). Default: the identity (vertex positions, D = 3).
-CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(range_map)
-/// Origin of the grid in the range space (`std::array<double, D>`). Default: 0.
-CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(grid_origin)
-/// Faces to start from in `Seeding_method::SEEDED` (a range of face descriptors).
-CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(seed_faces)
-
-/// `Dual_placement` of `dualize()`. Default: `Dual_placement::QEM`.
-CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(dual_placement)
-/// A read-write property map, dual vertex -> `Tangent_planes`: the tangent planes
-/// of the primal face, written by `dualize()` and read by `relax_on_tangent_planes()`.
-CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(vertex_tangent_planes_map)
-/// A property map, primal vertex -> vector: at a vertex that `primal_remesh()` puts
-/// inside an opened crease (a zero-area triangle of `insert_crease_triangles()`), the
-/// unit normal of the crease's other side, the null vector elsewhere. Written by
-/// `primal_remesh()` (`np_out`), read by `dualize()` (`np_in`), which gives such a
-/// vertex the tangent planes of both sides: a crease, not a bend.
-CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(vertex_crease_normal_map)
-/// Whether `remesh()` runs `collapse_quads()` between the dual and the relaxation
-/// (`bool`). Default: `true`.
-CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(quad_collapse)
-
-/// Whether `primal_remesh()` checks that its output has the topology of the input
-/// (`bool`, complete scan only): fills the topology fields of `Statistics` and
-/// reports each `Topology_defect` to the `topology_visitor`. Default: `false`.
-CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(check_topology)
-/// Whether `primal_remesh()` reduces the cell size until the topology check finds
-/// no defect (`bool`, complete scan only; implies `check_topology`). Default: `false`.
-CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(preserve_topology)
-/// A callable taking a `const Topology_defect<face_descriptor>&`, called for each
-/// defect the topology check finds in the output. Default: none.
-CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER(topology_visitor)
-
-#undef CGAL_RANGE_SPACE_REMESHING_NAMED_PARAMETER
+/// \cond SKIP_IN_MANUAL
+#define CGAL_RANGE_SPACE_REMESHING_FREE_FUNCTION(NS, TAG, NAME)                        \
+  template <class K>                                                                   \
+  Named_function_parameters<K, NS::TAG> NAME(const K& value)                           \
+  {                                                                                    \
+    return Named_function_parameters<K, NS::TAG>(value);                               \
+  }
+CGAL_RANGE_SPACE_REMESHING_EACH_PARAMETER(CGAL_RANGE_SPACE_REMESHING_FREE_FUNCTION)
+#undef CGAL_RANGE_SPACE_REMESHING_FREE_FUNCTION
+#undef CGAL_RANGE_SPACE_REMESHING_EACH_PARAMETER
+/// \endcond
 
 } // namespace parameters
+
+namespace internal {
+
+// The tags of a pack, from the last added to the first.
+template <class... Tags>
+struct Tag_list
+{};
+
+template <class Impl>
+struct Tags_of_impl;
+template <class T, class Tag>
+struct Tags_of_impl<CGAL::internal_np::Named_params_impl<T, Tag, CGAL::internal_np::No_property>>
+{
+  using type = Tag_list<Tag>;
+};
+template <class T, class Tag, class Base>
+struct Tags_of_impl<CGAL::internal_np::Named_params_impl<T, Tag, Base>>
+{
+  template <class List>
+  struct prepend;
+  template <class... Tags>
+  struct prepend<Tag_list<Tags...>>
+  {
+    using type = Tag_list<Tag, Tags...>;
+  };
+  using type = typename prepend<typename Tags_of_impl<typename Base::base>::type>::type;
+};
+
+template <class Tag, class... Accepted>
+struct Is_accepted : std::disjunction<std::is_same<Tag, CGAL::internal_np::all_default_t>,
+                                      std::is_same<Tag, Accepted>...>
+{};
+
+// One instance per given tag: the compiler's message names the tag and the function.
+template <class Function, class Tag, bool accepted>
+struct Check_named_parameter
+{
+  static_assert(accepted, "a named parameter is given that this function does not read "
+                          "(see the list of its named parameters in its documentation)");
+  static constexpr bool value = accepted;
+};
+
+template <class Function, class List, class... Accepted>
+struct Check_named_parameters;
+template <class Function, class... Tags, class... Accepted>
+struct Check_named_parameters<Function, Tag_list<Tags...>, Accepted...>
+{
+  static constexpr bool value =
+      (true && ... && Check_named_parameter<Function, Tags, Is_accepted<Tags, Accepted...>::value>::value);
+};
+
+/// Refuses, at compile time, a pack with a parameter that the function named by the
+/// tag type `Function` would ignore. `Accepted...` are the tags it reads.
+template <class Function, class NamedParameters, class... Accepted>
+constexpr bool check_named_parameters()
+{
+  using Tags = typename Tags_of_impl<typename NamedParameters::base>::type;
+  return Check_named_parameters<Function, Tags, Accepted...>::value;
+}
+
+} // namespace internal
 } // namespace Range_space_remeshing
 } // namespace CGAL
 

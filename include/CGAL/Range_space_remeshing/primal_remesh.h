@@ -14,6 +14,7 @@
 #include <CGAL/Range_space_remeshing/internal/Grid_tracer.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_output.h>
+#include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Topology_check.h>
 #include <CGAL/Range_space_remeshing/Topology_defect.h>
 
@@ -26,6 +27,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <tuple>
 #include <type_traits>
@@ -45,13 +47,74 @@ within about 13 GB.
 */
 constexpr std::size_t default_maximum_number_of_vertices = 10000000;
 
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+The cell size used when none is given (named parameters `grid_spacing` and
+`number_of_target_vertices` absent), as a fraction of the diagonal of the bounding box of
+the mapped input (of f(v) over the input vertices on a face).
+*/
+constexpr double default_relative_cell_size = 0.01;
+
 namespace internal {
+
+/// The range map of `np` (`range_map`), or the identity of the vertex point map.
+template <class TriangleMesh, class NamedParameters>
+struct Range_map_of
+{
+  using VPM = typename GetVertexPointMap<TriangleMesh, NamedParameters>::const_type;
+  using Default = Identity_range_map<VPM>;
+  using type = typename CGAL::internal_np::Lookup_named_param_def<internal_np::range_map_t, NamedParameters,
+                                                                  Default>::type;
+};
+
+template <class TriangleMesh, class NamedParameters>
+typename Range_map_of<TriangleMesh, NamedParameters>::type range_map_of(const TriangleMesh& tm,
+                                                                       const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using Default = typename Range_map_of<TriangleMesh, NamedParameters>::Default;
+  return choose_parameter(get_parameter(np, internal_np::range_map),
+                          Default(choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                                   get_const_property_map(CGAL::vertex_point, tm))));
+}
+
+// The dimension of a range point type: D for `std::array<double, D>`, 0 for anything else.
+template <class Value>
+struct Range_point_dimension : std::integral_constant<int, 0>
+{};
+template <std::size_t D>
+struct Range_point_dimension<std::array<double, D>> : std::integral_constant<int, int(D)>
+{};
 
 template <class RangeMap>
 constexpr int range_dimension()
 {
-  using Value = std::decay_t<typename boost::property_traits<RangeMap>::value_type>;
-  return int(std::tuple_size<Value>::value);
+  return Range_point_dimension<std::decay_t<typename boost::property_traits<RangeMap>::value_type>>::value;
+}
+
+/// Whether the range map of `NamedParameters` is one the remesher can use: its values
+/// `std::array<double, D>`, 3 <= D <= 16. The public functions check it first, with one
+/// message, and compile nothing else for a map that is not.
+template <class TriangleMesh, class NamedParameters>
+constexpr bool has_usable_range_map()
+{
+  constexpr int D = range_dimension<typename Range_map_of<TriangleMesh, NamedParameters>::type>();
+  return D >= minimum_range_dimension && D <= maximum_range_dimension;
+}
+
+template <class T>
+struct Always_false : std::false_type
+{};
+
+/// Refuses, with one message, a range map whose values are not `std::array<double, D>`
+/// with 3 <= D <= 16 (the instance of `T`, the map, names it in the compiler's output).
+template <class T>
+void refuse_range_map()
+{
+  static_assert(Always_false<T>::value,
+                "the range_map's value_type must be std::array<double, D> with 3 <= D <= 16 "
+                "(convert a Point_3, a std::array<float, D> or a vector in the map's get())");
 }
 
 inline double milliseconds_since(std::chrono::steady_clock::time_point& start)
@@ -60,6 +123,80 @@ inline double milliseconds_since(std::chrono::steady_clock::time_point& start)
   const double ms = std::chrono::duration<double, std::milli>(now - start).count();
   start = now;
   return ms;
+}
+
+/// `default_relative_cell_size` times the diagonal of the bounding box of f over the
+/// vertices on a face (an isolated vertex is never mapped by the remesh).
+template <class TriangleMesh, class RangeMap>
+double default_cell_size(const TriangleMesh& tm, const RangeMap& range_map)
+{
+  constexpr int D = range_dimension<RangeMap>();
+  std::array<double, D> low, high;
+  low.fill(std::numeric_limits<double>::infinity());
+  high.fill(-std::numeric_limits<double>::infinity());
+  for(auto v : vertices(tm)) {
+    if(halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
+      continue;
+    const auto& x = get(range_map, v);
+    for(int q = 0; q < D; ++q) {
+      if(!std::isfinite(double(x[q])))
+        throw Remeshing_error("the range map gives a NaN or infinite value");
+      low[q] = (std::min)(low[q], double(x[q]));
+      high[q] = (std::max)(high[q], double(x[q]));
+    }
+  }
+  // the diagonal, scaled by the longest side: the squares of huge or tiny sides would
+  // overflow or underflow
+  double longest = 0, sum = 0;
+  for(int q = 0; q < D; ++q)
+    longest = (std::max)(longest, high[q] - low[q]);
+  if(!(longest > 0) || !std::isfinite(longest))
+    throw Remeshing_error("the mapped input has no extent (a single point, or no face): give a grid_spacing",
+                          Remeshing_error::Kind::BAD_INPUT);
+  for(int q = 0; q < D; ++q)
+    sum += ((high[q] - low[q]) / longest) * ((high[q] - low[q]) / longest);
+  return default_relative_cell_size * longest * std::sqrt(sum);
+}
+
+// number_of_target_vertices: the counts accepted, and the runs tried at most
+constexpr double target_tolerance = 0.1;
+constexpr int maximum_target_runs = 12;
+
+/// Searches a cell size, from `h`, whose run gives `target` output vertices within
+/// `target_tolerance`: the count goes roughly as h^-2, refined by secant steps in
+/// log-log scale. `run(h)` does a run and returns its vertex count; the last run is the
+/// one found. A cell size refused as too small is doubled.
+template <class Run>
+double search_cell_size(double h, std::size_t target, const Run& run)
+{
+  double previous_h = 0, previous_log_n = 0, n = 0;
+  const double log_target = std::log(double(target));
+  for(int attempt = 0; attempt < maximum_target_runs; ++attempt) {
+    try {
+      n = double((std::max)(run(h), std::size_t(1)));
+    } catch(const Remeshing_error& error) {
+      if(error.kind() != Remeshing_error::Kind::OUTPUT_TOO_LARGE)
+        throw;
+      previous_h = 0;
+      h *= 2;
+      continue;
+    }
+    if(std::abs(n - double(target)) <= target_tolerance * double(target))
+      return h;
+    double slope = -2; // d log n / d log h
+    if(previous_h > 0) {
+      const double s = (std::log(n) - previous_log_n) / (std::log(h) - std::log(previous_h));
+      if(std::isfinite(s) && s < -0.5 && s > -4)
+        slope = s;
+    }
+    previous_h = h;
+    previous_log_n = std::log(n);
+    h = std::exp(std::log(h) + (log_target - std::log(n)) / slope);
+  }
+  throw Remeshing_error("no cell size tried gives " + std::to_string(target) + " output vertices within " +
+                            std::to_string(int(100 * target_tolerance)) + "% (the last gave " +
+                            std::to_string(std::size_t(n)) + ")",
+                        Remeshing_error::Kind::TARGET_NOT_REACHED);
 }
 
 /// One seed face per connected component of the input (connectivity only: the map
@@ -191,14 +328,14 @@ std::unique_ptr<Primal_complex> trace_primal_complex(const TriangleMesh& tm, Tra
   return complex;
 }
 
-// The whole run; `inspect(tracer, complex)` sees the intermediate structures
-// before the output is written (tests check the invariants there).
-template <class TriangleMesh, class PolygonMesh, class NamedParametersIn,
-          class NamedParametersOut, class Inspector, class ConcurrencyTag = CGAL::Sequential_tag>
-Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
-                              const NamedParametersIn& np_in,
-                              const NamedParametersOut& np_out, const Inspector& inspect,
-                              ConcurrencyTag = ConcurrencyTag())
+// The whole run at cell size `cell_size`; `inspect(tracer, complex)` sees the
+// intermediate structures before the output is written (tests check the invariants
+// there).
+template <class TriangleMesh, class PolygonMesh, class NamedParametersIn, class NamedParametersOut,
+          class Inspector, class ConcurrencyTag>
+Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMesh& out,
+                            const NamedParametersIn& np_in, const NamedParametersOut& np_out,
+                            const Inspector& inspect, const Progress& progress, ConcurrencyTag)
 {
 #if !defined(CGAL_LINKED_WITH_TBB)
   static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
@@ -217,11 +354,8 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
   using VPM = typename GetVertexPointMap<TriangleMesh, NamedParametersIn>::const_type;
   const VPM vpm = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_point),
                                    get_const_property_map(CGAL::vertex_point, tm));
-  using Default_map = Identity_range_map<VPM>;
-  using Range_map = typename CGAL::internal_np::Lookup_named_param_def<
-      internal_np::range_map_t, NamedParametersIn, Default_map>::type;
-  const Range_map range_map =
-      choose_parameter(get_parameter(np_in, internal_np::range_map), Default_map(vpm));
+  using Range_map = typename Range_map_of<TriangleMesh, NamedParametersIn>::type;
+  const Range_map range_map = range_map_of(tm, np_in);
   constexpr int D = range_dimension<Range_map>();
   using Default_traits = Range_space_traits<D>;
   using Traits = typename CGAL::internal_np::Lookup_named_param_def<
@@ -231,7 +365,6 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
   const Traits traits = choose_parameter<Traits>(get_parameter(np_in, CGAL::internal_np::geom_traits));
   using Point_d = typename Traits::Point_d;
 
-  const double cell_size = choose_parameter(get_parameter(np_in, CGAL::internal_np::grid_spacing), 1.);
   const Point_d origin = choose_parameter(get_parameter(np_in, internal_np::grid_origin), Point_d{});
   const Seeding_method seeding = choose_parameter(
       get_parameter(np_in, CGAL::internal_np::seeding_method), Seeding_method::COMPLETE_SCAN);
@@ -239,10 +372,10 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
       get_parameter(np_in, CGAL::internal_np::maximum_number), default_maximum_number_of_vertices));
 
   if(!(cell_size > 0) || !std::isfinite(cell_size))
-    throw Remeshing_error("the cell size must be a positive finite number");
+    throw Remeshing_error("the cell size must be a positive finite number", Remeshing_error::Kind::BAD_PARAMETER);
   for(double x : origin)
     if(!std::isfinite(x))
-      throw Remeshing_error("the grid origin must be finite");
+      throw Remeshing_error("the grid origin must be finite", Remeshing_error::Kind::BAD_PARAMETER);
   if(num_faces(tm) == 0)
     throw Remeshing_error("the input mesh has no face");
 
@@ -250,7 +383,8 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
   const bool check = preserve || choose_parameter(get_parameter(np_in, internal_np::check_topology), false);
   const bool seeded = (seeding == Seeding_method::SEEDED);
   if(preserve && seeded)
-    throw Remeshing_error("preserve_topology needs the complete scan (Seeding_method::COMPLETE_SCAN)");
+    throw Remeshing_error("preserve_topology needs the complete scan (Seeding_method::COMPLETE_SCAN)",
+                          Remeshing_error::Kind::BAD_PARAMETER);
   const auto visitor =
       choose_parameter(get_parameter(np_in, internal_np::topology_visitor), No_topology_visitor());
 
@@ -265,6 +399,7 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
     start = std::chrono::steady_clock::now();
     try {
       Tracer tracer(tm, range_map, face_index, vertex_index, origin, h, maximum_vertices, traits);
+      tracer.set_progress(progress);
       Statistics stats;
       stats.cell_size = h;
       stats.topology_refinements = refinements;
@@ -274,12 +409,13 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
 
       std::vector<Topology_defect<face_descriptor>> defects;
       if(check && !seeded) {
-        defects = Topology_check<Tracer, face_descriptor>(tracer, *complex).run(stats);
+        defects = Topology_check<Tracer, face_descriptor>(tracer, *complex).run(stats, progress);
         stats.time_topology_ms = milliseconds_since(start);
       }
       if(preserve && !stats.topology_preserved()) {
         if(refinements == maximum_topology_refinements)
-          throw Remeshing_error("defects remain at every cell size tried");
+          throw Remeshing_error("defects remain at every cell size tried",
+                                Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
         h *= topology_refinement_factor;
         continue;
       }
@@ -287,19 +423,78 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
         visitor(defect);
       inspect(tracer, *complex);
 
+      progress.report(Remeshing_stage::PRIMAL_OUTPUT, 0);
       write_primal_complex(tm, vpm, vertex_index, tracer, *complex, out, np_in, np_out, stats);
+      progress.report(Remeshing_stage::PRIMAL_OUTPUT, 1);
       stats.time_output_ms = milliseconds_since(start);
       stats.time_total_ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_total).count();
       return stats;
     } catch(const Remeshing_error& error) {
-      if(refinements == 0)
+      if(refinements == 0 || error.kind() == Remeshing_error::Kind::CANCELLED)
         throw;
       throw Remeshing_error("preserve_topology could not reach a cell size without topology defects (" +
                             std::to_string(refinements) + " refinements, to cell size " + std::to_string(h) +
-                            "): " + error.what());
+                            "): " + error.what(),
+                            Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
     }
   }
+}
+
+/// `check_named_parameters()` with the parameters `primal_remesh()` reads for its
+/// input, and `More...`.
+template <class Function, class NamedParameters, class... More>
+constexpr bool check_primal_remesh_parameters()
+{
+  namespace np = internal_np;
+  namespace cgal_np = CGAL::internal_np;
+  return check_named_parameters<Function, NamedParameters, np::range_map_t, cgal_np::grid_spacing_t,
+                                np::number_of_target_vertices_t, np::grid_origin_t, cgal_np::seeding_method_t,
+                                np::seed_faces_t, cgal_np::maximum_number_t, np::check_topology_t,
+                                np::preserve_topology_t, np::topology_visitor_t, np::progress_visitor_t,
+                                cgal_np::vertex_normal_map_t, cgal_np::vertex_color_map_t, cgal_np::vertex_point_t,
+                                cgal_np::geom_traits_t, cgal_np::vertex_index_t, cgal_np::face_index_t, More...>();
+}
+
+/// The cell size of `np`: `grid_spacing`, or the default relative to the mapped input.
+template <class TriangleMesh, class NamedParameters>
+double cell_size_of(const TriangleMesh& tm, const NamedParameters& np)
+{
+  using CGAL::parameters::get_parameter;
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::grid_spacing_t>::value)
+    return default_cell_size(tm, range_map_of(tm, np));
+  else
+    return double(get_parameter(np, CGAL::internal_np::grid_spacing));
+}
+
+/// `primal_remesh()`: at the cell size of `np`, or at the one found for
+/// `number_of_target_vertices`; on cancellation `out` is left empty.
+template <class TriangleMesh, class PolygonMesh, class NamedParametersIn, class NamedParametersOut,
+          class Inspector, class ConcurrencyTag = CGAL::Sequential_tag>
+Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out, const NamedParametersIn& np_in,
+                              const NamedParametersOut& np_out, const Inspector& inspect,
+                              ConcurrencyTag tag = ConcurrencyTag())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  if(num_faces(tm) == 0)
+    throw Remeshing_error("the input mesh has no face");
+  const Progress progress = progress_of(np_in);
+  const std::size_t target =
+      choose_parameter(get_parameter(np_in, internal_np::number_of_target_vertices), std::size_t(0));
+  remove_all_elements(out);
+  return emptied_on_cancel(out, [&] {
+    const double h = cell_size_of(tm, np_in);
+    if(target == 0)
+      return primal_remesh_at(h, tm, out, np_in, np_out, inspect, progress, tag);
+    Statistics stats;
+    search_cell_size(h, target, [&](double h_try) {
+      remove_all_elements(out);
+      stats = primal_remesh_at(h_try, tm, out, np_in, np_out, inspect, progress, tag);
+      return stats.output_vertices;
+    });
+    return stats;
+  });
 }
 
 } // namespace internal
@@ -308,8 +503,7 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out,
 \ingroup PkgRangeSpaceRemeshingRef
 
 computes the primal remesh of `tm` under the range map f: the intersection of the
-mapped surface f(`tm`) with a uniform grid of \f$\mathbb{R}^D\f$, and appends it to
-`out`.
+mapped surface f(`tm`) with a uniform grid of \f$\mathbb{R}^D\f$, into `out`.
 
 Every output vertex is where the mapped surface crosses a grid edge (a
 codimension-2 face of the grid); it has valence 4, except the two ends of a merged
@@ -333,7 +527,7 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
 \tparam PolygonMesh a model of `MutableFaceGraph`.
 
 \param tm the input mesh: 2-manifold, triangles only, with or without border.
-\param out receives the remesh (appended).
+\param out receives the remesh, in place of what it held (its property maps are kept).
 \param np_in optional named parameters for `tm`:
   \cgalNamedParamsBegin
     \cgalParamNBegin{range_map}
@@ -345,7 +539,16 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
     \cgalParamNBegin{grid_spacing}
       \cgalParamDescription{the cell size h of the grid, in units of f}
       \cgalParamType{double}
-      \cgalParamDefault{1}
+      \cgalParamDefault{`default_relative_cell_size` (1%) of the diagonal of the bounding box of
+                        f over the input's vertices (a pass over them, even in the seeded mode)}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_target_vertices}
+      \cgalParamDescription{the number of vertices wanted in `out`: the cell size is searched (from
+                            `grid_spacing` or its default) so that the output has this many within 10%,
+                            in at most 12 runs}
+      \cgalParamType{std::size_t}
+      \cgalParamDefault{none: the cell size is used as given}
+      \cgalParamExtra{`Remeshing_error` of kind `TARGET_NOT_REACHED` if no cell size tried gives the count}
     \cgalParamNEnd
     \cgalParamNBegin{grid_origin}
       \cgalParamDescription{a grid vertex}
@@ -398,6 +601,18 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
       \cgalParamType{a callable taking a `const Topology_defect<face_descriptor>&`}
       \cgalParamDefault{none}
     \cgalParamNEnd
+    \cgalParamNBegin{progress_visitor}
+      \cgalParamDescription{told how far the run is and asked whether to go on, as for `remesh()`;
+                            on cancellation `out` is left empty}
+      \cgalParamType{a callable `bool(Remeshing_stage, double)`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_color_map}
+      \cgalParamDescription{the input's vertex colours, sampled at the output's vertices into
+                            `np_out`'s map}
+      \cgalParamType{a readable property map, vertex -> `CGAL::IO::Color` or `std::array<double, 3>`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
     \cgalParamNBegin{vertex_normal_map}
       \cgalParamDescription{unit normals of the input's vertices, from which the output's normals
                             (`np_out`) are interpolated}
@@ -411,6 +626,8 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
       \cgalParamDescription{a model of `RangeSpaceTraits` of dimension D}
       \cgalParamDefault{`Range_space_traits<D>`}
     \cgalParamNEnd
+    \cgalParamNBegin{vertex_index_map}\cgalParamDefault{the mesh's, or one made for the run}\cgalParamNEnd
+    \cgalParamNBegin{face_index_map}\cgalParamDefault{the mesh's, or one made for the run}\cgalParamNEnd
   \cgalNamedParamsEnd
 \param np_out optional named parameters for `out`: `vertex_point_map`,
   `vertex_normal_map` (a writable map receiving unit normals interpolated from the
@@ -440,7 +657,16 @@ Statistics primal_remesh(const TriangleMesh& tm, PolygonMesh& out,
                          const NamedParametersIn& np_in = CGAL::parameters::default_values(),
                          const NamedParametersOut& np_out = CGAL::parameters::default_values())
 {
-  return internal::primal_remesh_impl(tm, out, np_in, np_out, internal::No_inspection(), ConcurrencyTag());
+  static_assert(internal::check_primal_remesh_parameters<struct primal_remesh_in, NamedParametersIn>());
+  static_assert(internal::check_named_parameters<struct primal_remesh_out, NamedParametersOut,
+                                                 CGAL::internal_np::vertex_point_t, CGAL::internal_np::vertex_normal_map_t,
+                                                 internal_np::vertex_crease_normal_map_t,
+                                                 CGAL::internal_np::vertex_color_map_t>());
+  if constexpr(!internal::has_usable_range_map<TriangleMesh, NamedParametersIn>()) {
+    internal::refuse_range_map<typename internal::Range_map_of<TriangleMesh, NamedParametersIn>::type>();
+    return Statistics();
+  } else
+    return internal::primal_remesh_impl(tm, out, np_in, np_out, internal::No_inspection(), ConcurrencyTag());
 }
 
 } // namespace Range_space_remeshing

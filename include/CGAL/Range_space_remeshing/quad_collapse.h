@@ -10,6 +10,7 @@
 #include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 #include <CGAL/Range_space_remeshing/internal/Quad_collapser.h>
+#include <CGAL/Range_space_remeshing/internal/Progress.h>
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -66,22 +67,58 @@ its place, and two such vertices meet on one of their faces' sides: the midpoint
 vertices on two creases of a concave corner lies in the notch between them, which
 the planes of a side do not keep it out of. Collapses and rotations are tried in passes, in decreasing order of
 energy decrease, until a pass (or a walk of the dipoles, which counts as one) changes
-nothing or `number_of_iterations` passes have run.
+nothing or `number_of_collapse_passes` passes have run.
 
 \tparam PolygonMesh a model of `MutableFaceGraph` (e.g. `Surface_mesh`, `Polyhedron_3`).
 \param mesh a polygon mesh, valid, with or without border, whose faces are simple polygons. A
   `Surface_mesh` is garbage-collected at the end, so that its indices stay contiguous.
 \param np optional named parameters:
-  - `vertex_point_map` (read-write; default: the mesh's point map);
-  - `geom_traits` (the 3-D kernel; default: the kernel of the point type);
-  - `vertex_normal_map` (read-write, unit normals; default: the average normal of each
-    vertex's tangent planes);
-  - `vertex_tangent_planes_map` (read-write, vertex -> `Tangent_planes`, e.g. from
-    `dualize()`; default: the planes of each vertex's incident faces, so that merged
-    vertices stay on the mesh's faces, creases and corners);
-  - `vertex_is_constrained_map` (vertex -> bool, default: none constrained);
-  - `do_flip` (bool, default `true`): whether edges are rotated too;
-  - `number_of_iterations` (the maximum number of passes, default 10).
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{number_of_collapse_passes}
+      \cgalParamDescription{the most passes}
+      \cgalParamType{int}
+      \cgalParamDefault{10}
+    \cgalParamNEnd
+    \cgalParamNBegin{do_flip}
+      \cgalParamDescription{whether edges are rotated too}
+      \cgalParamType{bool}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_tangent_planes_map}
+      \cgalParamDescription{the planes merged vertices are placed on (e.g. from `dualize()`); updated}
+      \cgalParamType{a read-write property map, vertex -> `Tangent_planes`}
+      \cgalParamDefault{the planes of each vertex's incident faces, so that merged vertices stay on the mesh's faces, creases and corners}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_normal_map}
+      \cgalParamDescription{unit normals; updated}
+      \cgalParamType{a read-write property map, vertex -> 3-D vector}
+      \cgalParamDefault{the average normal of each vertex's tangent planes}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_is_constrained_map}
+      \cgalParamDescription{vertices never merged nor moved}
+      \cgalParamType{a readable property map, vertex -> bool}
+      \cgalParamDefault{none constrained}
+    \cgalParamNEnd
+    \cgalParamNBegin{progress_visitor}
+      \cgalParamDescription{told how far the passes are and asked whether to go on, as for `remesh()`; on cancellation the mesh is left valid, with the collapses and rotations done so far}
+      \cgalParamType{a callable `bool(Remeshing_stage, double)`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDescription{read-write}
+      \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{geom_traits}
+      \cgalParamDescription{the 3-D kernel}
+      \cgalParamDefault{the kernel of the point type}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_index_map}
+      \cgalParamDefault{the mesh's, or one made for the run}
+    \cgalParamNEnd
+    \cgalParamNBegin{face_index_map}
+      \cgalParamDefault{the mesh's, or one made for the run}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
 Border vertices are never moved nor merged (so no border cycle moves or joins
 another); their regular valence is 3 in the energy.
 \throws Remeshing_error if the mesh is empty.
@@ -96,6 +133,12 @@ Collapse_statistics collapse_quads(PolygonMesh& mesh,
   using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
   using GeomTraits = typename GetGeomTraits<PolygonMesh, NamedParameters>::type;
   using Vector = typename GeomTraits::Vector_3;
+  static_assert(internal::check_named_parameters<
+                struct collapse_quads_np, NamedParameters, CGAL::internal_np::vertex_point_t,
+                CGAL::internal_np::geom_traits_t, CGAL::internal_np::vertex_normal_map_t,
+                internal_np::vertex_tangent_planes_map_t, CGAL::internal_np::vertex_is_constrained_t,
+                CGAL::internal_np::do_flip_t, internal_np::number_of_collapse_passes_t, internal_np::progress_visitor_t,
+                CGAL::internal_np::vertex_index_t, CGAL::internal_np::face_index_t>());
 
   const auto start = std::chrono::steady_clock::now();
   if(num_faces(mesh) == 0)
@@ -104,7 +147,8 @@ Collapse_statistics collapse_quads(PolygonMesh& mesh,
   using VPM = typename GetVertexPointMap<PolygonMesh, NamedParameters>::type;
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_property_map(CGAL::vertex_point, mesh));
-  const int passes = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 10);
+  const int passes = choose_parameter(get_parameter(np, internal_np::number_of_collapse_passes), 10);
+  const internal::Progress progress = internal::progress_of(np);
   const bool rotate_edges = choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true);
   auto constrained = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
                                       CGAL::Constant_property_map<vertex_descriptor, bool>(false));
@@ -131,14 +175,23 @@ Collapse_statistics collapse_quads(PolygonMesh& mesh,
   internal::Quad_collapser<PolygonMesh, VPM, decltype(planes), decltype(constrained),
                            decltype(vertex_index), decltype(face_index)>
       collapser(mesh, vpm, planes, constrained, vertex_index, face_index, normals, rotate_edges);
-  Collapse_statistics stats = collapser.run(passes);
-
-  if constexpr(has_normals) // before the garbage collection: indices still match
-    for(vertex_descriptor v : vertices(mesh)) {
-      const internal::Vec3& n = normals[get(vertex_index, v)];
-      put(normal_map, v, Vector(n[0], n[1], n[2]));
-    }
-  internal::collect_garbage_if_any(mesh);
+  // the mesh is valid after each collapse or rotation: a cancellation keeps those done
+  auto finish = [&] {
+    if constexpr(has_normals) // before the garbage collection: indices still match
+      for(vertex_descriptor v : vertices(mesh)) {
+        const internal::Vec3& n = normals[get(vertex_index, v)];
+        put(normal_map, v, Vector(n[0], n[1], n[2]));
+      }
+    internal::collect_garbage_if_any(mesh);
+  };
+  Collapse_statistics stats;
+  try {
+    stats = collapser.run(passes, progress);
+  } catch(const Remeshing_cancelled&) {
+    finish();
+    throw;
+  }
+  finish();
   stats.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }

@@ -9,6 +9,7 @@
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
 #include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
+#include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Polygon_kernel.h>
 #include <CGAL/Range_space_remeshing/internal/Pooled_tangent_planes_map.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
@@ -128,7 +129,7 @@ inline void keep_faces_unfolded(const Face_corners& fc, const std::vector<Vec3>&
 \ingroup PkgRangeSpaceRemeshingRef
 
 relaxes the vertices of `mesh` over the surface they sample (section 6 of the paper).
-Each of the `number_of_iterations` iterations (a) replaces every vertex's position
+Each of the `number_of_relaxation_steps` steps (a) replaces every vertex's position
 and normal by the average of its neighbours' (the normal renormalised), which spreads
 the vertices evenly but shrinks and smooths, then (b) moves it back to the nearest
 minimiser of the squared distances to its tangent planes, along the directions those
@@ -183,14 +184,35 @@ corners of the border (where it turns by more than 30 degrees) stay.
 \param mesh a polygon mesh (any `FaceGraph`, e.g. the output of `dualize()`);
   positions (and normals if given) are updated, the connectivity is not.
 \param np optional named parameters:
-  - `vertex_tangent_planes_map` (readable, vertex -> `Tangent_planes`, e.g. from
-    `dualize()` and `collapse_quads()`; default: the planes of each vertex's incident
-    faces, so that vertices of a mesh that came without planes stay on its faces,
-    creases and corners);
-  - `number_of_iterations` (default 3);
-  - `vertex_point_map`;
-  - `vertex_normal_map` (read-write; default: the average normal of each vertex's
-    tangent planes).
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{number_of_relaxation_steps}
+      \cgalParamDescription{the steps}
+      \cgalParamType{int}
+      \cgalParamDefault{3}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_tangent_planes_map}
+      \cgalParamDescription{the planes each vertex is projected on (e.g. from `dualize()` and `collapse_quads()`)}
+      \cgalParamType{a readable property map, vertex -> `Tangent_planes`}
+      \cgalParamDefault{the planes of each vertex's incident faces, so that vertices of a mesh that came without planes stay on its faces, creases and corners}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_normal_map}
+      \cgalParamDescription{unit normals; updated}
+      \cgalParamType{a read-write property map, vertex -> 3-D vector}
+      \cgalParamDefault{the average normal of each vertex's tangent planes}
+    \cgalParamNEnd
+    \cgalParamNBegin{progress_visitor}
+      \cgalParamDescription{told how far the steps are and asked whether to go on, as for `remesh()`; on cancellation the mesh is left unchanged}
+      \cgalParamType{a callable `bool(Remeshing_stage, double)`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDescription{read-write}
+      \cgalParamDefault{`get(CGAL::vertex_point, mesh)`}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_index_map}
+      \cgalParamDefault{the mesh's, or one made for the run}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
 \returns the time taken, in milliseconds.
 */
 template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -201,9 +223,15 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
   using CGAL::parameters::is_default_parameter;
   using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
   using internal::Vec3;
+  static_assert(internal::check_named_parameters<
+                struct relax_on_tangent_planes_np, NamedParameters, internal_np::vertex_tangent_planes_map_t,
+                CGAL::internal_np::number_of_relaxation_steps_t, CGAL::internal_np::vertex_point_t,
+                CGAL::internal_np::vertex_normal_map_t, internal_np::progress_visitor_t,
+                CGAL::internal_np::vertex_index_t>());
 
   const auto start = std::chrono::steady_clock::now();
-  const int iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 3);
+  const internal::Progress progress = internal::progress_of(np);
+  const int iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 3);
   using VPM = typename GetVertexPointMap<PolygonMesh, NamedParameters>::type;
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_property_map(CGAL::vertex_point, mesh));
@@ -329,6 +357,9 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
   }
   for(int iteration = 0; iteration < iterations; ++iteration) {
     for(std::size_t k = 0; k < vertex_order.size(); ++k) {
+      // the mesh is written after the last step: a cancellation leaves it unchanged
+      progress.report_every(Remeshing_stage::RELAXATION, std::size_t(iteration) * vertex_order.size() + k,
+                            std::size_t(iterations) * vertex_order.size());
       const vertex_descriptor v = vertex_order[k];
       const std::size_t i = get(vertex_index, v);
       Vec3 p = {{0, 0, 0}}, m = {{0, 0, 0}};

@@ -11,6 +11,7 @@
 #include <CGAL/Range_space_remeshing/quad_collapse.h>
 #include <CGAL/Range_space_remeshing/relax_on_tangent_planes.h>
 #include <CGAL/Range_space_remeshing/internal/Pooled_tangent_planes_map.h>
+#include <CGAL/Range_space_remeshing/internal/Progress.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -19,6 +20,7 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <functional>
 
 namespace CGAL {
 namespace Range_space_remeshing {
@@ -40,34 +42,16 @@ struct Remesh_statistics
   bool topology_preserved() const { return primal.topology_preserved() && dual.dropped_pieces == 0; }
 };
 
-/*!
-\ingroup PkgRangeSpaceRemeshingRef
+namespace internal {
 
-The whole pipeline: `primal_remesh()` of `tm`, `dualize()` of the result into
-`quads`, `collapse_quads()`, then `relax_on_tangent_planes()`. When the cell size
-resolves nothing (an empty primal, or only pieces without a dual), `quads` is left
-as it was and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
+// preserve_topology in remesh(): the dual's refinements, each by this factor, at most
+constexpr double dual_refinement_factor = 0.70710678118654752;
+constexpr int maximum_dual_refinements = 10;
 
-\param tm the input triangle mesh, as for `primal_remesh()`.
-\param quads receives the remesh (appended); a `MutableFaceGraph`.
-\param np the named parameters of `primal_remesh()` (`range_map`, `grid_spacing`,
-  `grid_origin`, `seeding_method`, `seed_faces`, `maximum_number`, `check_topology`,
-  `preserve_topology`, `topology_visitor`, `vertex_point_map`, `vertex_normal_map`,
-  `geom_traits`), plus `dual_placement` (default
-  `Dual_placement::QEM`), `quad_collapse` (default `true`), `do_flip` (the collapse's
-  edge rotations, default `true`) and `number_of_relaxation_steps` (default 3).
-\tparam ConcurrencyTag `CGAL::Sequential_tag` (the default) or `CGAL::Parallel_tag`, for
-  the primal remesh (see `primal_remesh()`).
-\param np_out `vertex_point_map` of `quads`; `vertex_color_map` (receives colours, if `np`
-  has the input's `vertex_color_map`: sampled on the primal, averaged per quad; a
-  collapsed pair keeps one of its two colours, the relaxation does not resample).
-*/
-template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class QuadMesh,
-          class NamedParameters = CGAL::parameters::Default_named_parameters,
-          class NamedParametersOut = CGAL::parameters::Default_named_parameters>
-Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
-                         const NamedParameters& np = CGAL::parameters::default_values(),
-                         const NamedParametersOut& np_out = CGAL::parameters::default_values())
+/// One run of the pipeline at cell size `h`, into `quads` (empty).
+template <class ConcurrencyTag, class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
+Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, const NamedParameters& np,
+                            const NamedParametersOut& np_out, const Progress& progress)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -86,24 +70,27 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
   Primal primal;
   auto primal_normals = primal.add_property_map<typename Primal::Vertex_index, Vector>("v:normal").first;
   auto crease_normals = primal.add_property_map<typename Primal::Vertex_index, Vector>("v:crease_normal").first;
-  const auto primal_out = parameters::vertex_crease_normal_map(crease_normals,
-                                                               CGAL::parameters::vertex_normal_map(primal_normals));
+  const auto primal_out = parameters::vertex_crease_normal_map(crease_normals).vertex_normal_map(primal_normals);
 
   const Out_VPM out_vpm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
                                            get_property_map(CGAL::vertex_point, quads));
   // the planes by slot (see Pooled_tangent_planes_map.h): the dual and the collapse
   // collect the mesh's garbage, which copies vertex properties element by element
-  internal::Tangent_planes_pool planes_pool;
+  Tangent_planes_pool planes_pool;
   auto slots = get(CGAL::dynamic_vertex_property_t<std::size_t>(), quads);
-  const internal::Pooled_tangent_planes_map<decltype(slots)> planes(slots, planes_pool);
+  const Pooled_tangent_planes_map<decltype(slots)> planes(slots, planes_pool);
   auto normals = get(CGAL::dynamic_vertex_property_t<Out_vector>(), quads);
   const Dual_placement placement =
       choose_parameter(get_parameter(np, internal_np::dual_placement), Dual_placement::QEM);
-  const auto dual_in = parameters::dual_placement(
-      placement, parameters::vertex_crease_normal_map(crease_normals,
-                                                      CGAL::parameters::vertex_normal_map(primal_normals)));
-  const auto dual_out = parameters::vertex_tangent_planes_map(
-      planes, CGAL::parameters::vertex_normal_map(normals).vertex_point_map(out_vpm));
+  const auto dual_in = parameters::dual_placement(placement)
+                           .vertex_crease_normal_map(crease_normals)
+                           .vertex_normal_map(primal_normals);
+  const auto dual_out = parameters::vertex_tangent_planes_map(planes).vertex_normal_map(normals).vertex_point_map(out_vpm);
+  // the stages below run with the visitor of this run
+  const auto stage_parameters = parameters::vertex_tangent_planes_map(planes)
+                                    .vertex_normal_map(normals)
+                                    .vertex_point_map(out_vpm)
+                                    .progress_visitor(std::cref(progress));
   auto finish = [&] {
     stats.time_total_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -111,7 +98,7 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
   };
   // The primal remesh, and whether it has faces.
   auto remesh_primal = [&](const auto& np_primal_out) {
-    stats.primal = primal_remesh<ConcurrencyTag>(tm, primal, np, np_primal_out);
+    stats.primal = primal_remesh_at(h, tm, primal, np, np_primal_out, No_inspection(), progress, ConcurrencyTag());
     planes_pool.decompositions.reserve(num_faces(primal)); // one per dual vertex of a face
     return num_faces(primal) > 0;
   };
@@ -121,29 +108,205 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
     auto primal_colors = primal.add_property_map<typename Primal::Vertex_index, std::array<double, 3>>("v:color").first;
     if(!remesh_primal(primal_out.vertex_color_map(primal_colors)))
       return finish();
-    stats.dual = dualize(primal, quads, dual_in.vertex_color_map(primal_colors),
-                         dual_out.vertex_color_map(get_parameter(np_out, CGAL::internal_np::vertex_color_map)));
+    stats.dual = build_dual(primal, quads, dual_in.vertex_color_map(primal_colors),
+                            dual_out.vertex_color_map(get_parameter(np_out, CGAL::internal_np::vertex_color_map)),
+                            progress);
   } else {
     if(!remesh_primal(primal_out))
       return finish();
-    stats.dual = dualize(primal, quads, dual_in, dual_out);
+    stats.dual = build_dual(primal, quads, dual_in, dual_out, progress);
   }
   if(stats.dual.quads + stats.dual.non_quads == 0)
     return finish();
 
   if(choose_parameter(get_parameter(np, internal_np::quad_collapse), true))
     stats.collapse = collapse_quads(
-        quads, parameters::vertex_tangent_planes_map(
-                   planes, CGAL::parameters::vertex_normal_map(normals).vertex_point_map(out_vpm).do_flip(
-                               choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true))));
+        quads, stage_parameters.do_flip(choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true))
+                   .number_of_collapse_passes(
+                       choose_parameter(get_parameter(np, internal_np::number_of_collapse_passes), 10)));
 
   const int steps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 3);
   if(steps > 0)
-    stats.time_relaxation_ms = relax_on_tangent_planes(
-        quads, parameters::vertex_tangent_planes_map(planes, CGAL::parameters::number_of_iterations(steps)
-                                                                 .vertex_normal_map(normals)
-                                                                 .vertex_point_map(out_vpm)));
+    stats.time_relaxation_ms = relax_on_tangent_planes(quads, stage_parameters.number_of_relaxation_steps(steps));
   return finish();
+}
+
+/// Whether the dual lost something the primal had: a dropped piece, or parallel edges
+/// (kept, or undone by joining two faces into one that is not a quad).
+inline bool dual_lost_topology(const Dual_statistics& dual)
+{
+  return dual.parallel_edges + dual.joined_parallel_edges + dual.dropped_pieces > 0;
+}
+
+/// `remesh_at()`; with `preserve_topology`, the cell size is also refined from the one
+/// the primal needed until the dual keeps the topology too, in quads.
+template <class ConcurrencyTag, class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
+Remesh_statistics remesh_keeping_topology(double h, const TriangleMesh& tm, QuadMesh& quads,
+                                          const NamedParameters& np, const NamedParametersOut& np_out,
+                                          const Progress& progress)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Remesh_statistics stats = remesh_at<ConcurrencyTag>(h, tm, quads, np, np_out, progress);
+  if(!choose_parameter(get_parameter(np, internal_np::preserve_topology), false))
+    return stats;
+  for(int refinement = 0; dual_lost_topology(stats.dual); ++refinement) {
+    if(refinement == maximum_dual_refinements)
+      throw Remeshing_error("preserve_topology: the dual loses the topology at every cell size tried",
+                            Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
+    remove_all_elements(quads);
+    stats = remesh_at<ConcurrencyTag>(stats.primal.cell_size * dual_refinement_factor, tm, quads, np, np_out,
+                                      progress);
+  }
+  return stats;
+}
+
+} // namespace internal
+
+namespace internal {
+
+/// The body of `remesh()`.
+template <class ConcurrencyTag, class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
+Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const NamedParameters& np,
+                              const NamedParametersOut& np_out)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  if(num_faces(tm) == 0)
+    throw Remeshing_error("the input mesh has no face");
+  const internal::Progress progress = internal::progress_of(np);
+  const std::size_t target =
+      choose_parameter(get_parameter(np, internal_np::number_of_target_vertices), std::size_t(0));
+  internal::remove_all_elements(quads);
+  return internal::emptied_on_cancel(quads, [&] {
+    const double h = internal::cell_size_of(tm, np);
+    if(target == 0)
+      return internal::remesh_keeping_topology<ConcurrencyTag>(h, tm, quads, np, np_out, progress);
+    Remesh_statistics stats;
+    internal::search_cell_size(h, target, [&](double h_try) {
+      internal::remove_all_elements(quads);
+      stats = internal::remesh_keeping_topology<ConcurrencyTag>(h_try, tm, quads, np, np_out, progress);
+      return std::size_t(num_vertices(quads));
+    });
+    return stats;
+  });
+}
+
+} // namespace internal
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
+The whole pipeline: `primal_remesh()` of `tm`, `dualize()` of the result into
+`quads`, `collapse_quads()`, then `relax_on_tangent_planes()`. When the cell size
+resolves nothing (an empty primal, or only pieces without a dual), `quads` is left
+empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
+
+\tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeGraph`, a triangle mesh.
+\tparam QuadMesh a model of `MutableFaceGraph`.
+\tparam ConcurrencyTag `CGAL::Sequential_tag` (the default) or `CGAL::Parallel_tag`, for
+  the primal remesh (see `primal_remesh()`).
+
+\param tm the input triangle mesh, as for `primal_remesh()`.
+\param quads receives the remesh, in place of what it held (its property maps are kept).
+\param np optional named parameters: those of `primal_remesh()`'s `np_in`, and
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{grid_spacing}
+      \cgalParamDescription{the cell size h of the grid, in units of f}
+      \cgalParamType{double}
+      \cgalParamDefault{`default_relative_cell_size` (1%) of the diagonal of the mapped input's bounding box}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_target_vertices}
+      \cgalParamDescription{the number of vertices wanted in `quads`: the cell size is searched (from
+                            `grid_spacing` or its default) so that the output has this many within 10%,
+                            in at most 12 runs of the pipeline}
+      \cgalParamType{std::size_t}
+      \cgalParamDefault{none: the cell size is used as given}
+      \cgalParamExtra{`Remeshing_error` of kind `TARGET_NOT_REACHED` if no cell size tried gives the count}
+    \cgalParamNEnd
+    \cgalParamNBegin{preserve_topology}
+      \cgalParamDescription{as for `primal_remesh()`, and then the cell size is refined further (by
+                            factors of \f$1/\sqrt{2}\f$, at most 10 times) until the dual drops no piece
+                            and has no parallel edges: the quads keep the input's topology as far as
+                            the checks tell (`Remesh_statistics::topology_preserved()`)}
+      \cgalParamType{bool}
+      \cgalParamDefault{`false`}
+    \cgalParamNEnd
+    \cgalParamNBegin{dual_placement}
+      \cgalParamDescription{where `dualize()` puts the dual vertices}
+      \cgalParamType{`Dual_placement`}
+      \cgalParamDefault{`Dual_placement::QEM`}
+    \cgalParamNEnd
+    \cgalParamNBegin{quad_collapse}
+      \cgalParamDescription{whether `collapse_quads()` runs}
+      \cgalParamType{bool}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
+    \cgalParamNBegin{do_flip}
+      \cgalParamDescription{whether the collapse also rotates edges}
+      \cgalParamType{bool}
+      \cgalParamDefault{`true`}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_collapse_passes}
+      \cgalParamDescription{the most passes of `collapse_quads()`}
+      \cgalParamType{int}
+      \cgalParamDefault{10}
+    \cgalParamNEnd
+    \cgalParamNBegin{number_of_relaxation_steps}
+      \cgalParamDescription{the steps of `relax_on_tangent_planes()` (0: no relaxation)}
+      \cgalParamType{int}
+      \cgalParamDefault{3}
+    \cgalParamNEnd
+    \cgalParamNBegin{progress_visitor}
+      \cgalParamDescription{told how far the run is, and asked whether to go on: called with the
+                            `Remeshing_stage` and the fraction of it done (0 to 1) on the calling
+                            thread, many times per stage (at least every few milliseconds of work);
+                            returning `false` cancels the run, which then throws
+                            `Remeshing_cancelled` and leaves `quads` empty}
+      \cgalParamType{a callable `bool(Remeshing_stage, double)`, copied once}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_color_map}
+      \cgalParamDescription{the input's vertex colours, carried to `np_out`'s map: sampled on the
+                            primal, averaged per quad; a collapsed pair keeps one of its two colours,
+                            the relaxation does not resample}
+      \cgalParamType{a readable property map, vertex -> `CGAL::IO::Color` or `std::array<double, 3>`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+\param np_out optional named parameters for `quads`:
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_point_map}\cgalParamDefault{`get(CGAL::vertex_point, quads)`}\cgalParamNEnd
+    \cgalParamNBegin{vertex_color_map}
+      \cgalParamDescription{receives the colours, if `np` has the input's}
+      \cgalParamType{a writable property map, vertex -> colour}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+
+\returns what each stage did.
+\throws Remeshing_error as `primal_remesh()` does; `Remeshing_cancelled` when the visitor
+  asks to stop.
+*/
+template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class QuadMesh,
+          class NamedParameters = CGAL::parameters::Default_named_parameters,
+          class NamedParametersOut = CGAL::parameters::Default_named_parameters>
+Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
+                         const NamedParameters& np = CGAL::parameters::default_values(),
+                         const NamedParametersOut& np_out = CGAL::parameters::default_values())
+{
+  static_assert(internal::check_primal_remesh_parameters<
+                struct remesh_np, NamedParameters, internal_np::dual_placement_t, internal_np::quad_collapse_t,
+                CGAL::internal_np::do_flip_t, internal_np::number_of_collapse_passes_t,
+                CGAL::internal_np::number_of_relaxation_steps_t>());
+  static_assert(internal::check_named_parameters<struct remesh_np_out, NamedParametersOut,
+                                                 CGAL::internal_np::vertex_point_t,
+                                                 CGAL::internal_np::vertex_color_map_t>());
+  if constexpr(!internal::has_usable_range_map<TriangleMesh, NamedParameters>()) {
+    internal::refuse_range_map<typename internal::Range_map_of<TriangleMesh, NamedParameters>::type>();
+    return Remesh_statistics();
+  } else
+    return internal::remesh_impl<ConcurrencyTag>(tm, quads, np, np_out);
 }
 
 } // namespace Range_space_remeshing

@@ -141,20 +141,20 @@ void run_one(const std::uint8_t* data, std::size_t size)
                                     CGAL::square(box.zmax() - box.zmin()));
   const double h = cell_size_from(cell_code, diagonal);
   const double shift = (flags & 16) ? 0.5 * h : 0.;
-  const auto np = CGAL::parameters::grid_spacing(h)
+  const auto np = RSR::parameters::grid_spacing(h)
                       .seeding_method((flags & 1) ? RSR::Seeding_method::SEEDED : RSR::Seeding_method::COMPLETE_SCAN)
                       .number_of_relaxation_steps((flags >> 1) & 3)
                       .maximum_number(std::size_t(200000));
-  const auto collapse = RSR::parameters::quad_collapse(!(flags & 8), np);
+  const auto collapse = np.quad_collapse(!(flags & 8));
   try {
     if(map == 0)
-      remesh_and_verify(mesh, RSR::parameters::grid_origin(RSR::Range_space_traits<3>::Point_d{{shift, shift, shift}}, collapse));
+      remesh_and_verify(mesh, collapse.grid_origin(RSR::Range_space_traits<3>::Point_d{{shift, shift, shift}}));
     else if(map == 1)
-      remesh_and_verify(mesh, RSR::parameters::range_map(RSR::make_gauss_range_map(mesh), collapse));
+      remesh_and_verify(mesh, collapse.range_map(RSR::make_gauss_range_map(mesh)));
     else if(map == 2)
-      remesh_and_verify(mesh, RSR::parameters::range_map(RSR::make_position_normal_range_map(mesh, 1., normal_weight), collapse));
+      remesh_and_verify(mesh, collapse.range_map(RSR::make_position_normal_range_map(mesh, 1., normal_weight)));
     else
-      remesh_and_verify(mesh, RSR::parameters::range_map(Duplicated_and_constant_map{&mesh}, collapse));
+      remesh_and_verify(mesh, collapse.range_map(Duplicated_and_constant_map{&mesh}));
   } catch(const RSR::Remeshing_error&) {
     // bad input, reported cleanly: what the library promises
   }

@@ -28,6 +28,7 @@
 #include <CGAL/Range_space_remeshing/internal/Level_differences.h>
 #include <CGAL/Range_space_remeshing/internal/Perturbed_predicates.h>
 #include <CGAL/Range_space_remeshing/internal/Prefetch.h>
+#include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Vertex_table.h>
 
 #include <CGAL/Exact_rational.h>
@@ -149,6 +150,9 @@ public:
       table_((std::min)(std::size_t(num_faces(tm)) / 8, std::size_t(1) << 16))
   {}
 
+  /// Where the scan and the tracing report how far they are (and may be cancelled).
+  void set_progress(const Progress& progress) { progress_ = &progress; }
+
   // ---------------------------------------------------------------- results
   const std::vector<Vertex>& intersection_vertices() const { return vertices_; }
   face_descriptor face_of(const Vertex& v) const { return face_of_id_[v.face_id]; }
@@ -192,6 +196,7 @@ public:
     record_all_faces();
     const std::size_t n = all_face_ids_.size();
     for(std::size_t position = 0; position < n; ++position) {
+      progress_->report_every(Remeshing_stage::SCAN, n + position, 2 * n); // after the mapping
       if(position + scan_lookahead < n)
         prefetch_corners(all_face_ids_[position + scan_lookahead]);
       scan_triangle(load(all_face_ids_[position]), bound_before_scan);
@@ -241,7 +246,8 @@ public:
     if(expected > cap)
       throw Remeshing_error("the output would have about " + std::to_string(std::llround(expected)) +
                             " vertices, more than the cap of " + std::to_string(std::llround(cap)) +
-                            ": the cell size is too small for this input");
+                            ": the cell size is too small for this input",
+                            Remeshing_error::Kind::OUTPUT_TOO_LARGE);
   }
 
   /// Creates the boundary vertices on the border edges of a face, if it has any.
@@ -257,8 +263,11 @@ public:
   /// scan over the faces would read them at random (at n = 9, three arrays per vertex).
   void map_all_vertices()
   {
-    for(vertex_descriptor v : vertices(tm_))
+    std::size_t done = 0;
+    for(vertex_descriptor v : vertices(tm_)) {
+      progress_->report_every(Remeshing_stage::SCAN, done++, 2 * num_vertices(tm_));
       map_in_place(v);
+    }
     number_of_mapped_ = mapped_.size();
   }
 
@@ -269,28 +278,32 @@ public:
   void map_and_record_in_parallel()
   {
     const std::vector<vertex_descriptor> all_vertices(vertices(tm_).begin(), vertices(tm_).end());
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, all_vertices.size(), 2048),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        for(std::size_t i = range.begin(); i != range.end(); ++i)
-                          map_in_place(all_vertices[i]);
-                      });
+    in_reported_blocks(all_vertices.size(), 0.0, [&](std::size_t first, std::size_t last) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 2048),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          for(std::size_t i = range.begin(); i != range.end(); ++i)
+                            map_in_place(all_vertices[i]);
+                        });
+    });
     number_of_mapped_ = all_vertices.size();
 
     list_faces_in_scan_order();
     std::atomic<bool> border_seen(false);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, all_face_ids_.size(), 2048),
-                      [&](const tbb::blocked_range<std::size_t>& range) {
-                        bool border_here = false;
-                        for(std::size_t i = range.begin(); i != range.end(); ++i) {
-                          const std::uint32_t id = all_face_ids_[i];
-                          fill_record(id);
-                          recorded_[id] = 1;
-                          for(std::uint32_t n : records_[id].neighbour)
-                            border_here = border_here || n == border;
-                        }
-                        if(border_here)
-                          border_seen = true;
-                      });
+    in_reported_blocks(all_face_ids_.size(), 0.25, [&](std::size_t first, std::size_t last) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last, 2048),
+                        [&](const tbb::blocked_range<std::size_t>& range) {
+                          bool border_here = false;
+                          for(std::size_t i = range.begin(); i != range.end(); ++i) {
+                            const std::uint32_t id = all_face_ids_[i];
+                            fill_record(id);
+                            recorded_[id] = 1;
+                            for(std::uint32_t n : records_[id].neighbour)
+                              border_here = border_here || n == border;
+                          }
+                          if(border_here)
+                            border_seen = true;
+                        });
+    });
     seen_border_ = seen_border_ || border_seen;
     number_of_visited_faces_ = all_face_ids_.size();
   }
@@ -310,19 +323,21 @@ public:
     constexpr std::size_t chunk = 1024; // faces per task: the merge below needs the order
     const std::size_t n = all_face_ids_.size(), chunks = (n + chunk - 1) / chunk;
     std::vector<std::vector<Found>> found(chunks);
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks), [&](const tbb::blocked_range<std::size_t>& range) {
-      for(std::size_t c = range.begin(); c != range.end(); ++c)
-        for(std::size_t position = c * chunk; position < (std::min)(n, (c + 1) * chunk); ++position) {
-          const Triangle t = load(all_face_ids_[position]); // reads only: all mapped and recorded
-          const Crossed_levels levels = crossed_levels(t);
-          if(levels.number_of_axes == 0)
-            continue;
-          account_for_crossings(levels, t.face_id);
-          scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
-            found[c].push_back(
-                {std::uint32_t(position), std::int8_t(i), std::int8_t(j), std::int8_t(o), k, m});
-          });
-        }
+    in_reported_blocks(chunks, 0.5, [&](std::size_t first, std::size_t last) {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(first, last), [&](const tbb::blocked_range<std::size_t>& range) {
+        for(std::size_t c = range.begin(); c != range.end(); ++c)
+          for(std::size_t position = c * chunk; position < (std::min)(n, (c + 1) * chunk); ++position) {
+            const Triangle t = load(all_face_ids_[position]); // reads only: all mapped and recorded
+            const Crossed_levels levels = crossed_levels(t);
+            if(levels.number_of_axes == 0)
+              continue;
+            account_for_crossings(levels, t.face_id);
+            scan_crossed_levels(t, levels, [&](int i, int j, std::int32_t k, std::int32_t m, int o) {
+              found[c].push_back(
+                  {std::uint32_t(position), std::int8_t(i), std::int8_t(j), std::int8_t(o), k, m});
+            });
+          }
+      });
     });
     for(std::size_t c = 0; c < chunks; ++c) {
       auto next = found[c].begin();
@@ -332,6 +347,20 @@ public:
           find_or_create(face_id, next->i, next->j, next->k, next->m, next->orientation, /*queue*/ true);
         create_border_crossings_of(face_id);
       }
+    }
+  }
+
+  /// Runs `work(first, last)` on consecutive blocks of [0, n), reporting the scan's
+  /// progress between them on this thread: the visitor is never called from two
+  /// threads, and a cancellation waits for one block at most. `start`: the fraction of
+  /// the scan done before.
+  template <class Work>
+  void in_reported_blocks(std::size_t n, double start, const Work& work)
+  {
+    constexpr std::size_t block = 16 * Progress::interval;
+    for(std::size_t first = 0; first < n; first += block) {
+      progress_->report(Remeshing_stage::SCAN, start + 0.25 * double(first) / double(n));
+      work(first, (std::min)(n, first + block));
     }
   }
 #endif
@@ -409,7 +438,9 @@ public:
   /// when `create_at_arc_ends`, and must already exist otherwise (complete scan).
   void trace(bool create_at_arc_ends)
   {
-    while(!queue_.empty()) {
+    for(std::size_t traced = 0; !queue_.empty(); ++traced) {
+      // the queue holds every vertex after a complete scan; the seeded tracing adds more
+      progress_->report_every(Remeshing_stage::TRACE, traced, traced + queue_.size());
       const std::uint32_t v = queue_.front();
       queue_.pop_front();
       if(!vertices_[v].has_cell)
@@ -562,7 +593,8 @@ private:
     if(!std::isfinite(value))
       throw Remeshing_error("the range map gives a NaN or infinite value at input vertex " + std::to_string(id));
     throw Remeshing_error("the cell size is too small for the range of the map: "
-                          "more than 2^29 cells along one axis");
+                          "more than 2^29 cells along one axis",
+                          Remeshing_error::Kind::OUTPUT_TOO_LARGE);
   }
 
   const Face_record& record(std::uint32_t face_id)
@@ -1022,7 +1054,8 @@ private:
     if(vertices_.size() >= maximum_vertices_)
       throw Remeshing_error("the output would exceed the cap of " +
                             std::to_string(maximum_vertices_) +
-                            " vertices: the cell size is too small for this input");
+                            " vertices: the cell size is too small for this input",
+                            Remeshing_error::Kind::OUTPUT_TOO_LARGE);
   }
 
   /// The lattice cell of the vertex in the axes other than its grid edge's:
@@ -1551,6 +1584,8 @@ private:
   double cell_size_;
   std::size_t maximum_vertices_;
   Predicates predicates_;
+  Progress no_progress_;
+  const Progress* progress_ = &no_progress_;
 
   // The arrays by input vertex or face are zeroed lazily, or not at all where each
   // entry is written before it is read: a seeded run touches only a fraction of them

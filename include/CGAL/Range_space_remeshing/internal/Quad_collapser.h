@@ -25,6 +25,7 @@
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
+#include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Polygon_kernel.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
@@ -91,7 +92,18 @@ public:
   /// whose vertex valences the previous pass changed (the others' energies are as
   /// they were). Once a pass changes nothing, and if edges rotate, a pass walks the
   /// dipoles (`walk_dipoles()`); what it changes starts the passes again.
-  Collapse_statistics run(int maximum_passes)
+  Collapse_statistics run(int maximum_passes, const Progress& progress)
+  {
+    try {
+      return run_passes(maximum_passes, progress);
+    } catch(const Remeshing_cancelled&) {
+      remove_unlinked_elements(); // each collapse and rotation is whole: the mesh is valid
+      throw;
+    }
+  }
+
+private:
+  Collapse_statistics run_passes(int maximum_passes, const Progress& progress)
   {
     Collapse_statistics stats;
     std::vector<Candidate> candidates;
@@ -104,6 +116,7 @@ public:
       const bool walk = to_examine.empty();
       if(walk && !rotate_edges_)
         break;
+      progress.report(Remeshing_stage::COLLAPSE, double(pass - 1) / double(maximum_passes));
       ++stats.passes;
       pass_ = pass;
       touched_ = &to_examine;
@@ -114,8 +127,12 @@ public:
         collect_candidates(to_examine, candidates);
         sort_for_sweep(candidates);
         to_examine.clear();
-        for(const Candidate& candidate : candidates)
-          try_candidate(candidate, stats);
+        for(std::size_t c = 0; c < candidates.size(); ++c) {
+          progress.report_every(Remeshing_stage::COLLAPSE,
+                                std::size_t(pass - 1) * candidates.size() + c,
+                                std::size_t(maximum_passes) * candidates.size());
+          try_candidate(candidates[c], stats);
+        }
       }
       std::sort(to_examine.begin(), to_examine.end(), [&](face_descriptor f, face_descriptor g) {
         return get(face_index_, f) < get(face_index_, g);

@@ -31,6 +31,7 @@
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Topology_defect.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
+#include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Union_find.h>
 
 #include <algorithm>
@@ -76,15 +77,18 @@ public:
   {}
 
   /// Fills the topology fields of `stats` and returns the defects found.
-  std::vector<Defect> run(Statistics& stats)
+  std::vector<Defect> run(Statistics& stats, const Progress& progress)
   {
+    progress.report(Remeshing_stage::TOPOLOGY_CHECK, 0);
     stats.topology_checked = true;
     tracer_.find_closed_loops(
         [&](int axis, std::int32_t level, const Levels& cell, const std::vector<std::uint32_t>& faces) {
           loops_.push_back(Loop{axis, cell, faces});
           loops_.back().cell[axis] = level;
         });
+    progress.report(Remeshing_stage::TOPOLOGY_CHECK, 0.25);
     const long chi_of_kept_components = find_components(stats);
+    progress.report(Remeshing_stage::TOPOLOGY_CHECK, 0.5);
     if(stats.uncrossed_border_cycles > 0) // the scan counted them: walk them for their faces
       find_lost_border_cycles();
     stats.input_euler_characteristic = input_euler_characteristic_;
@@ -104,6 +108,7 @@ public:
     }
     if(!defects_.empty() || !loops_.empty() || !chi_matches) {
       Cell_map excess = count_per_cell();
+      progress.report(Remeshing_stage::TOPOLOGY_CHECK, 0.75);
       stats.harmless_loops = absorb_caps(excess);
       for(const Loop& loop : loops_)
         if(!loop.harmless) {

@@ -1,0 +1,247 @@
+// The public interface around the engines: named parameters chained in any order,
+// the default cell size, number_of_target_vertices, the progress visitor and
+// cancellation, the kinds of Remeshing_error.
+// argv[1]: the folder holding CGAL's elephant.off.
+#include "test_support.h"
+
+#include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
+#include <CGAL/Range_space_remeshing/remesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <cmath>
+#include <utility>
+#include <vector>
+
+using namespace test;
+
+namespace {
+
+using Call = std::pair<RSR::Remeshing_stage, double>;
+
+/// Whether `run()` throws a `Remeshing_error` of kind `kind`.
+template <class Run>
+bool throws_kind(const Run& run, RSR::Remeshing_error::Kind kind)
+{
+  try {
+    run();
+  } catch(const RSR::Remeshing_error& e) {
+    return e.kind() == kind;
+  }
+  return false;
+}
+
+long genus_of(const Mesh& m) { return (2 - euler_characteristic(m)) / 2; }
+
+/// Both chains of the issue, in different orders, give what the same values give
+/// written with CGAL's own packs.
+void test_chains(const Mesh& sphere)
+{
+  const auto vpm = get(CGAL::vertex_point, sphere);
+  const auto f = RSR::make_position_normal_range_map(sphere, 1.0, 0.2);
+  Mesh a, b, c;
+  RSR::remesh(sphere, a,
+              RSR::parameters::grid_spacing(0.15).range_map(f).preserve_topology(true).vertex_point_map(vpm));
+  RSR::remesh(sphere, b,
+              RSR::parameters::vertex_point_map(vpm)
+                  .dual_placement(RSR::Dual_placement::QEM)
+                  .range_map(f)
+                  .preserve_topology(true)
+                  .grid_spacing(0.15));
+  RSR::remesh(sphere, c, RSR::parameters::range_map(f).grid_spacing(0.15).preserve_topology(true));
+  CHECK(num_faces(a) > 0);
+  CHECK_EQ(fingerprint(a), fingerprint(b));
+  CHECK_EQ(fingerprint(a), fingerprint(c));
+  // a CGAL pack is read too, and a chain of the package's is a CGAL pack for CGAL
+  Mesh d;
+  RSR::remesh(sphere, d, CGAL::parameters::grid_spacing(0.15).vertex_point_map(vpm));
+  Mesh e;
+  RSR::remesh(sphere, e, RSR::parameters::grid_spacing(0.15));
+  CHECK_EQ(fingerprint(d), fingerprint(e));
+  // the iteration counts have one name each
+  Mesh collapsed = a;
+  RSR::collapse_quads(collapsed, RSR::parameters::number_of_collapse_passes(1).do_flip(false));
+  RSR::relax_on_tangent_planes(collapsed, RSR::parameters::number_of_relaxation_steps(2));
+  CHECK(CGAL::is_valid_polygon_mesh(collapsed));
+}
+
+/// Without a cell size, 1% of the mapped bounding box's diagonal: the elephant keeps
+/// its genus and gets thousands of quads (a cell of 1 gave 3 quads and genus 0).
+void test_default_cell_size(const Mesh& elephant)
+{
+  Mesh quads;
+  const RSR::Remesh_statistics stats = RSR::remesh(elephant, quads);
+  std::cout << "elephant, defaults: " << num_faces(quads) << " quads, genus " << genus_of(quads) << ", cell size "
+            << stats.primal.cell_size << std::endl;
+  CHECK(CGAL::is_valid_polygon_mesh(quads));
+  CHECK(num_faces(quads) > 2000);
+  CHECK_EQ(genus_of(quads), genus_of(elephant));
+  CHECK(std::abs(stats.primal.cell_size - RSR::default_relative_cell_size * bbox_diagonal(elephant)) <
+        1e-12 * bbox_diagonal(elephant));
+  // the default follows the map: twice the map, twice the cell
+  const auto vpm = get(CGAL::vertex_point, elephant);
+  const auto doubled = RSR::make_position_normal_range_map(elephant, 2.0, 0.0);
+  Mesh primal;
+  const RSR::Statistics s = RSR::primal_remesh(elephant, primal, RSR::parameters::range_map(doubled));
+  CHECK(std::abs(s.cell_size - 2 * stats.primal.cell_size) < 1e-9 * s.cell_size);
+  (void)vpm;
+}
+
+void test_target_vertices(const Mesh& elephant)
+{
+  for(std::size_t target : {1500, 6000}) {
+    Mesh quads;
+    const auto stats = RSR::remesh(elephant, quads, RSR::parameters::number_of_target_vertices(target));
+    std::cout << "target " << target << ": " << num_vertices(quads) << " vertices at cell size "
+              << stats.primal.cell_size << std::endl;
+    CHECK(std::abs(double(num_vertices(quads)) - double(target)) <= 0.1 * double(target));
+    CHECK(CGAL::is_valid_polygon_mesh(quads));
+  }
+  Mesh primal;
+  RSR::primal_remesh(elephant, primal, RSR::parameters::number_of_target_vertices(std::size_t(4000)));
+  CHECK(std::abs(double(num_vertices(primal)) - 4000.) <= 400.);
+  // a count no cell size gives: told, not guessed
+  Mesh tiny;
+  CHECK(throws_kind([&] { RSR::remesh(elephant, tiny, RSR::parameters::number_of_target_vertices(std::size_t(3))); },
+                    RSR::Remeshing_error::Kind::TARGET_NOT_REACHED));
+}
+
+/// The visitor hears every stage, in order, with fractions in [0, 1], on this thread.
+void test_progress(const Mesh& elephant)
+{
+  std::vector<Call> calls;
+  Mesh quads;
+  RSR::remesh(elephant, quads, RSR::parameters::check_topology(true).progress_visitor([&](RSR::Remeshing_stage s, double f) {
+    calls.emplace_back(s, f);
+    return true;
+  }));
+  CHECK(calls.size() >= 7);
+  bool ordered = true, in_range = true;
+  std::vector<int> seen(7, 0);
+  for(std::size_t i = 0; i < calls.size(); ++i) {
+    in_range = in_range && calls[i].second >= 0 && calls[i].second <= 1;
+    if(i > 0)
+      ordered = ordered && calls[i - 1].first <= calls[i].first;
+    seen[int(calls[i].first)] = 1;
+  }
+  CHECK(ordered);
+  CHECK(in_range);
+  for(int stage = 0; stage < 7; ++stage)
+    CHECK_EQ(seen[stage], 1);
+  // the same output with and without a visitor
+  Mesh plain;
+  RSR::remesh(elephant, plain, RSR::parameters::check_topology(true));
+  CHECK_EQ(fingerprint(plain), fingerprint(quads));
+}
+
+/// Cancelled in any stage, or halfway: Remeshing_cancelled, and the output is empty
+/// with its property maps still usable.
+void test_cancel(const Mesh& elephant)
+{
+  std::size_t total = 0;
+  {
+    Mesh quads;
+    RSR::remesh(elephant, quads, RSR::parameters::progress_visitor([&](RSR::Remeshing_stage, double) {
+      ++total;
+      return true;
+    }));
+  }
+  for(int stage = 0; stage <= int(RSR::Remeshing_stage::RELAXATION); ++stage) {
+    if(stage == int(RSR::Remeshing_stage::TOPOLOGY_CHECK))
+      continue; // not run here: see below
+    Mesh quads = elephant; // not empty before: emptied all the same
+    auto colors = quads.add_property_map<Mesh::Vertex_index, int>("v:mark", 7).first;
+    bool cancelled = false;
+    try {
+      RSR::remesh(elephant, quads, RSR::parameters::progress_visitor([&](RSR::Remeshing_stage s, double) {
+        return int(s) != stage;
+      }));
+    } catch(const RSR::Remeshing_cancelled& e) {
+      cancelled = e.kind() == RSR::Remeshing_error::Kind::CANCELLED;
+    }
+    CHECK(cancelled);
+    CHECK_EQ(num_vertices(quads), Mesh::size_type(0));
+    CHECK_EQ(num_faces(quads), Mesh::size_type(0));
+    const auto v = quads.add_vertex(Point(0, 0, 0)); // the caller's map still works
+    CHECK_EQ(colors[v], 7);
+  }
+  // halfway through the calls of a whole run, with the check and the target search
+  std::size_t calls = 0;
+  Mesh quads;
+  bool cancelled = false;
+  try {
+    RSR::remesh(elephant, quads,
+                RSR::parameters::check_topology(true).progress_visitor([&](RSR::Remeshing_stage, double) {
+                  return ++calls < total / 2;
+                }));
+  } catch(const RSR::Remeshing_cancelled&) {
+    cancelled = true;
+  }
+  CHECK(cancelled);
+  CHECK_EQ(calls, total / 2);
+  CHECK_EQ(num_faces(quads), Mesh::size_type(0));
+  // the primal alone
+  Mesh primal;
+  cancelled = false;
+  try {
+    RSR::primal_remesh(elephant, primal,
+                       RSR::parameters::check_topology(true).progress_visitor(
+                           [](RSR::Remeshing_stage s, double) { return s != RSR::Remeshing_stage::TOPOLOGY_CHECK; }));
+  } catch(const RSR::Remeshing_cancelled&) {
+    cancelled = true;
+  }
+  CHECK(cancelled);
+  CHECK_EQ(num_vertices(primal), Mesh::size_type(0));
+  // the in-place stages: the collapse leaves a valid mesh, the relaxation an unchanged one
+  Mesh dual;
+  RSR::remesh(elephant, dual, RSR::parameters::quad_collapse(false).number_of_relaxation_steps(0));
+  const auto stop_at_once = RSR::parameters::progress_visitor([](RSR::Remeshing_stage, double) { return false; });
+  Mesh collapsed = dual;
+  CHECK(throws_kind([&] { RSR::collapse_quads(collapsed, stop_at_once); }, RSR::Remeshing_error::Kind::CANCELLED));
+  CHECK(CGAL::is_valid_polygon_mesh(collapsed));
+  Mesh relaxed = dual;
+  CHECK(throws_kind([&] { RSR::relax_on_tangent_planes(relaxed, stop_at_once); },
+                    RSR::Remeshing_error::Kind::CANCELLED));
+  CHECK_EQ(fingerprint(relaxed), fingerprint(dual));
+  Mesh dualized;
+  Mesh primal_again;
+  RSR::primal_remesh(elephant, primal_again);
+  CHECK(throws_kind([&] { RSR::dualize(primal_again, dualized, stop_at_once); },
+                    RSR::Remeshing_error::Kind::CANCELLED));
+  CHECK_EQ(num_vertices(dualized), Mesh::size_type(0));
+}
+
+void test_error_kinds(const Mesh& sphere)
+{
+  using Kind = RSR::Remeshing_error::Kind;
+  Mesh out;
+  CHECK(throws_kind([&] { RSR::remesh(sphere, out, RSR::parameters::grid_spacing(-1.0)); }, Kind::BAD_PARAMETER));
+  CHECK(throws_kind([&] { RSR::remesh(Mesh(), out); }, Kind::BAD_INPUT));
+  CHECK(throws_kind([&] { RSR::primal_remesh(sphere, out, RSR::parameters::grid_spacing(1e-3).maximum_number(1000)); },
+                    Kind::OUTPUT_TOO_LARGE));
+  CHECK(throws_kind(
+            [&] {
+              RSR::primal_remesh(sphere, out,
+                                 RSR::parameters::preserve_topology(true).seeding_method(RSR::Seeding_method::SEEDED));
+            },
+            Kind::BAD_PARAMETER));
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if(argc < 2) {
+    std::cerr << "usage: test_parameters MESH_FOLDER" << std::endl;
+    return EXIT_FAILURE;
+  }
+  Mesh elephant;
+  CHECK(CGAL::IO::read_polygon_mesh(std::string(argv[1]) + "/elephant.off", elephant));
+  const Mesh sphere = make_sphere(1.0, 3);
+  test_chains(sphere);
+  test_default_cell_size(elephant);
+  test_target_vertices(elephant);
+  test_progress(elephant);
+  test_cancel(elephant);
+  test_error_kinds(sphere);
+  return report("test_parameters");
+}
