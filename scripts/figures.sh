@@ -2,6 +2,8 @@
 # Renders the manual's figures from real runs of the command-line program and the
 # examples (f3d, headless under xvfb-run): doc/Range_space_remeshing/fig/*.png.
 # The meshes behind them stay in build/figures/.
+# Usage: scripts/figures.sh [getting-started]   (the argument: only the figures of the
+# manual's Getting started page, which need the program alone)
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -10,7 +12,9 @@ export CCACHE_DIR="${CCACHE_DIR:-$HOME/.cache/ccache}"
 export CCACHE_BASEDIR="${CCACHE_BASEDIR:-$PWD}"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2" \
       -DBUILD_TESTING=ON -DRANGE_SPACE_REMESHING_BUILD_EXAMPLES=ON > /dev/null
-cmake --build build -j "$(nproc)" --target range_space_remesh color_map_example > /dev/null
+targets=(range_space_remesh color_map_example)
+[ "${1:-}" = getting-started ] && targets=(range_space_remesh)
+cmake --build build -j 2 --target "${targets[@]}" > /dev/null
 
 work=build/figures
 figures=doc/Range_space_remeshing/fig
@@ -38,6 +42,22 @@ remesh() {
 }
 
 elephant="$meshes/elephant.off"
+# the Getting started page: the elephant at three cell sizes (fractions of the
+# bounding-box diagonal; halving the cell about quadruples the vertices), then the
+# identity against position + normal at two normal weights, all at about 3,000
+# output vertices (--target-vertices searches the cell size)
+for cell in 0.03 0.02 0.01; do
+  remesh "start_cell_$cell" "$elephant" --cell-size "$cell"
+  render "$work/start_cell_$cell.off" "start_cell_$cell.png"
+done
+remesh start_map_identity "$elephant" --target-vertices 3000
+render "$work/start_map_identity.off" start_map_identity.png
+for weight in 0.05 0.2; do
+  remesh "start_map_normal_$weight" "$elephant" --target-vertices 3000 --map position-normal --normal-weight "$weight"
+  render "$work/start_map_normal_$weight.off" "start_map_normal_$weight.png"
+done
+[ "${1:-}" = getting-started ] && exit 0
+
 render "$elephant" input_elephant.png
 # the paper's figure 2: primal, dual at two resolutions, Gauss map, R^6 from uniform
 # to anisotropic
