@@ -47,5 +47,14 @@ if [ "$quick" = 1 ]; then output=build-bench/RESULTS-quick.md; fi
   echo "## Stages of the primal contouring, cost of the dimension"
   echo
   build-bench/bin/contour_benchmark "${runs[@]:0:2}" "${paths[@]:0:2}"
+  echo
+  echo "## Progress visitor: the longest wait between two calls"
+  echo
+  build-bench/bin/progress_gaps "${paths[@]}"
 } | tee "$output.part"
+# the hand-kept part below the tables (measurements the manual quotes, made by other
+# programs and tests) is kept as it is
+if [ "$quick" = 0 ] && grep -q '^## Measurements from the manual' "$output"; then
+  { echo; sed -n '/^## Measurements from the manual/,$p' "$output"; } >> "$output.part"
+fi
 mv "$output.part" "$output"

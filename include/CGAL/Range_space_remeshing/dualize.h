@@ -434,7 +434,7 @@ void count_corners_of_dual_faces(const PolygonMesh& primal, VertexIndexMap verte
 template <class PolygonMesh, class VertexIndexMap, class HasDualFace>
 std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>
 edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index, const HasDualFace& has_dual_face,
-              const std::vector<std::size_t>& corners_of_dual_face)
+              const std::vector<std::size_t>& corners_of_dual_face, const Progress& progress)
 {
   using halfedge_descriptor = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
   const std::size_t n = num_vertices(primal);
@@ -476,7 +476,9 @@ edges_to_join(const PolygonMesh& primal, VertexIndexMap vertex_index, const HasD
   std::vector<halfedge_descriptor> options;
   std::vector<std::size_t> count(n, 0); // by group: its options; zeroed after each round
   std::vector<std::size_t> counted;       // the groups whose count is not zero
+  Work_meter meter(progress, Remeshing_stage::DUAL);
   for(;;) { // match charge-1 groups, most constrained first, until none is left
+    meter.add(low_edges.size(), 0.8); // a round reads them all
     options.clear();
     for(halfedge_descriptor h : low_edges) {
       const auto [a, b] = groups(h);
@@ -842,7 +844,11 @@ Dual_statistics build_dual(const PolygonMesh& primal, QuadMesh& quads, const Nam
   // Where the primal has vertices of valence 3 and 2 (the ends of merged digons),
   // join the dual faces across the primal edges chosen by `edges_to_join()`: each
   // group of joined faces then has exactly four corners.
-  for(halfedge_descriptor h : internal::edges_to_join(primal, vertex_index, has_dual_face, corners_of_dual_face)) {
+  const auto to_join = internal::edges_to_join(primal, vertex_index, has_dual_face, corners_of_dual_face, progress);
+  progress.report(Remeshing_stage::DUAL, 0.82);
+  Work_meter meter(progress, Remeshing_stage::DUAL);
+  for(halfedge_descriptor h : to_join) {
+    meter.add(1, 0.82);
     const dual_halfedge dh = d(h);
     if(!internal::join_keeps_face_simple(dh, quads))
       continue; // left as two faces: counted in non_quads
@@ -850,13 +856,17 @@ Dual_statistics build_dual(const PolygonMesh& primal, QuadMesh& quads, const Nam
     ++stats.joined_triangle_pairs;
     --stats.dual_faces;
   }
+  progress.report(Remeshing_stage::DUAL, 0.85);
   stats.dropped_pieces = faces_without_dual + internal::remove_pieces_with_non_simple_faces(quads, stats.dual_faces);
+  progress.report(Remeshing_stage::DUAL, 0.9);
   stats.removed_pinches = internal::remove_pinches(quads, stats.dual_vertices, stats.dual_faces);
+  progress.report(Remeshing_stage::DUAL, 0.95);
   stats.parallel_edges = internal::rotate_parallel_edges(quads, out_vpm);
   if(stats.parallel_edges > 0) {
     stats.joined_parallel_edges = internal::join_across_parallel_edges(quads, stats.dual_faces);
     stats.parallel_edges = internal::number_of_parallel_edges(quads);
   }
+  progress.report(Remeshing_stage::DUAL, 0.97);
   internal::collect_garbage_if_any(quads);
   for(auto f : faces(quads))
     (degree(f, quads) == 4 ? stats.quads : stats.non_quads) += 1;

@@ -321,7 +321,9 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
   std::vector<std::size_t> first_unit_plane(n, 0), end_unit_plane(n, 0);
   const double infinity = std::numeric_limits<double>::infinity();
   std::vector<std::pair<Vec3, Vec3>> planes_box(n, {{{-infinity, -infinity, -infinity}}, {{infinity, infinity, infinity}}});
+  std::size_t prepared = 0;
   for(vertex_descriptor v : vertices(mesh)) {
+    progress.report_at_every(Remeshing_stage::RELAXATION, prepared++, 0.0); // the steps not begun
     const std::size_t i = get(vertex_index, v);
     if(on_border[i])
       continue;

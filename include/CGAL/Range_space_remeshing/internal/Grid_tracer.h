@@ -195,8 +195,12 @@ public:
     };
     record_all_faces();
     const std::size_t n = all_face_ids_.size();
+    Work_meter meter(*progress_, Remeshing_stage::SCAN);
+    std::size_t vertices_before = vertices_.size();
     for(std::size_t position = 0; position < n; ++position) {
-      progress_->report_every(Remeshing_stage::SCAN, n + position, 2 * n); // after the mapping
+      // the work: a face, and the vertices it holds; the second half of the scan
+      meter.add(1 + vertices_.size() - vertices_before, 0.5 + 0.5 * double(position) / double(n));
+      vertices_before = vertices_.size();
       if(position + scan_lookahead < n)
         prefetch_corners(all_face_ids_[position + scan_lookahead]);
       scan_triangle(load(all_face_ids_[position]), bound_before_scan);
@@ -438,9 +442,13 @@ public:
   /// when `create_at_arc_ends`, and must already exist otherwise (complete scan).
   void trace(bool create_at_arc_ends)
   {
+    Work_meter meter(*progress_, Remeshing_stage::TRACE);
+    std::size_t steps_before = tracing_steps_;
     for(std::size_t traced = 0; !queue_.empty(); ++traced) {
-      // the queue holds every vertex after a complete scan; the seeded tracing adds more
-      progress_->report_every(Remeshing_stage::TRACE, traced, traced + queue_.size());
+      // the work: the steps of the arcs (one face each); the queue holds every vertex
+      // after a complete scan, the seeded tracing adds more
+      meter.add(1 + tracing_steps_ - steps_before, double(traced) / double(traced + queue_.size()));
+      steps_before = tracing_steps_;
       const std::uint32_t v = queue_.front();
       queue_.pop_front();
       if(!vertices_[v].has_cell)

@@ -44,6 +44,13 @@ public:
       throw Remeshing_cancelled();
   }
 
+  /// `report()` of `fraction`, when `index` is a multiple of `interval`.
+  void report_at_every(Remeshing_stage stage, std::size_t index, double fraction) const
+  {
+    if(index % interval == 0 && visitor_)
+      report(stage, fraction);
+  }
+
   /// What the visitor answers (true without one): a run hands its progress to the
   /// functions it calls as their visitor.
   bool operator()(Remeshing_stage stage, double fraction) const { return !visitor_ || visitor_(stage, fraction); }
@@ -57,6 +64,31 @@ public:
 
 private:
   std::function<bool(Remeshing_stage, double)> visitor_;
+};
+
+/// For a loop whose elements cost unequal work (a face crossing thousands of cells,
+/// an arc crossing thousands of faces): reports each time another `Progress::interval`
+/// units of work have been done, so that the visitor hears from it as often whatever the
+/// elements cost.
+class Work_meter
+{
+public:
+  Work_meter(const Progress& progress, Remeshing_stage stage) : progress_(progress), stage_(stage) {}
+
+  /// Counts `units` of work done, `fraction` of the stage reached.
+  void add(std::size_t units, double fraction)
+  {
+    work_ += units;
+    if(work_ >= next_report_) {
+      next_report_ = work_ + Progress::interval;
+      progress_.report(stage_, fraction);
+    }
+  }
+
+private:
+  const Progress& progress_;
+  Remeshing_stage stage_;
+  std::size_t work_ = 0, next_report_ = 0;
 };
 
 /// The `progress_visitor` of `np`, if any.

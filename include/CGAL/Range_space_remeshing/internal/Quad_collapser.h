@@ -107,7 +107,10 @@ private:
   {
     Collapse_statistics stats;
     std::vector<Candidate> candidates;
+    progress_ = &progress;
+    maximum_passes_ = maximum_passes;
     stats.removed_doublets = remove_doublets();
+    progress.report(Remeshing_stage::COLLAPSE, 0);
     std::vector<face_descriptor> to_examine;
     for(face_descriptor f : faces(mesh_))
       if(!removed_faces_[get(face_index_, f)])
@@ -125,7 +128,9 @@ private:
           break;
       } else {
         collect_candidates(to_examine, candidates);
+        progress.report(Remeshing_stage::COLLAPSE, double(pass - 1) / double(maximum_passes));
         sort_for_sweep(candidates);
+        progress.report(Remeshing_stage::COLLAPSE, double(pass - 1) / double(maximum_passes));
         to_examine.clear();
         for(std::size_t c = 0; c < candidates.size(); ++c) {
           progress.report_every(Remeshing_stage::COLLAPSE,
@@ -138,6 +143,7 @@ private:
         return get(face_index_, f) < get(face_index_, g);
       });
     }
+    progress.report(Remeshing_stage::COLLAPSE, 1);
     remove_unlinked_elements();
     return stats;
   }
@@ -480,7 +486,10 @@ private:
     Collapse_statistics tries;
     std::size_t kept = 0;
     const std::vector<face_descriptor> quads = quads_to_walk();
+    Work_meter meter(*progress_, Remeshing_stage::COLLAPSE);
+    std::size_t walked = 0;
     for(face_descriptor f : quads) {
+      meter.add(1, (double(pass_ - 1) + double(walked++) / double(quads.size())) / double(maximum_passes_));
       // a collapse made possible by an earlier walk may have removed it; and around a
       // quad of regular corners, a rotation of one of its edges raises the energy
       if(!is_live_quad(f) || has_regular_corners(f))
@@ -980,6 +989,8 @@ private:
   bool touching_ = true; // whether operations queue the faces they change
   std::vector<int> valences_;                // by vertex index
   std::vector<std::uint8_t> on_border_;      // by vertex index
+  const Progress* progress_ = nullptr; // of the run
+  int maximum_passes_ = 1;
   std::size_t pass_ = 0;
   std::vector<face_descriptor>* touched_ = nullptr; // the next pass's faces
   mutable std::vector<vertex_descriptor> around_a_;

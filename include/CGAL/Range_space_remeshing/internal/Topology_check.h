@@ -79,6 +79,7 @@ public:
   /// Fills the topology fields of `stats` and returns the defects found.
   std::vector<Defect> run(Statistics& stats, const Progress& progress)
   {
+    progress_ = &progress;
     progress.report(Remeshing_stage::TOPOLOGY_CHECK, 0);
     stats.topology_checked = true;
     tracer_.find_closed_loops(
@@ -86,9 +87,9 @@ public:
           loops_.push_back(Loop{axis, cell, faces});
           loops_.back().cell[axis] = level;
         });
-    progress.report(Remeshing_stage::TOPOLOGY_CHECK, 0.25);
+    progress.report(Remeshing_stage::TOPOLOGY_CHECK, 0.1);
     const long chi_of_kept_components = find_components(stats);
-    progress.report(Remeshing_stage::TOPOLOGY_CHECK, 0.5);
+    progress.report(Remeshing_stage::TOPOLOGY_CHECK, 0.2);
     if(stats.uncrossed_border_cycles > 0) // the scan counted them: walk them for their faces
       find_lost_border_cycles();
     stats.input_euler_characteristic = input_euler_characteristic_;
@@ -108,7 +109,6 @@ public:
     }
     if(!defects_.empty() || !loops_.empty() || !chi_matches) {
       Cell_map excess = count_per_cell();
-      progress.report(Remeshing_stage::TOPOLOGY_CHECK, 0.75);
       stats.harmless_loops = absorb_caps(excess);
       for(const Loop& loop : loops_)
         if(!loop.harmless) {
@@ -415,10 +415,12 @@ private:
     Cell_map excess;
     std::vector<Levels> cells;
     std::vector<std::uint8_t> vertex_counted(tracer_.number_of_input_vertices(), 0);
+    Work_meter meter(*progress_, Remeshing_stage::TOPOLOGY_CHECK);
     for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
       if(is_lost(f))
         continue;
       cells_of_face(f, cells);
+      meter.add(1 + cells.size(), 0.2 + 0.5 * f / number_of_faces_);
       for(const Levels& c : cells)
         ++excess[c];
       const auto& corners = tracer_.corners_of(f);
@@ -436,8 +438,10 @@ private:
           ++excess[cell_of_vertex(corners[e])];
         }
     }
-    for(const auto& corner : complex_.traced_face_corners())
+    for(const auto& corner : complex_.traced_face_corners()) {
+      meter.add(1, 0.7);
       --excess[cell_of_traced_face(corner)];
+    }
     add_border_pieces(excess);
     return excess;
   }
@@ -554,11 +558,14 @@ private:
   std::size_t locate_non_disk_cells(const Cell_map& excess)
   {
     std::unordered_map<Levels, std::size_t, Levels_hash<Levels>> defect_of_cell;
-    for(const auto& entry : excess)
+    Work_meter meter(*progress_, Remeshing_stage::TOPOLOGY_CHECK);
+    for(const auto& entry : excess) {
+      meter.add(1, 0.7);
       if(entry.second != 0) {
         defect_of_cell.emplace(entry.first, defects_.size());
         add_defect(Topology_defect_kind::NON_DISK_CELL, entry.first, std::vector<std::uint32_t>());
       }
+    }
     if(defect_of_cell.empty())
       return 0;
     std::vector<Levels> cells;
@@ -566,6 +573,7 @@ private:
       if(is_lost(f))
         continue;
       cells_of_face(f, cells);
+      meter.add(1 + cells.size(), 0.7 + 0.3 * f / number_of_faces_);
       for(const Levels& c : cells) {
         const auto found = defect_of_cell.find(c);
         if(found != defect_of_cell.end())
@@ -575,6 +583,8 @@ private:
     return defect_of_cell.size();
   }
 
+  Progress no_progress_;
+  const Progress* progress_ = &no_progress_;
   Tracer& tracer_;
   const Primal_complex& complex_;
   std::uint32_t number_of_faces_;
