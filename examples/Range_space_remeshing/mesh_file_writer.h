@@ -12,9 +12,8 @@
 
 #include "mesh_file_reader.h" // extension_of
 
-#include <CGAL/Range_space_remeshing/prepare_input.h> // internal::fan_triangulate
-
 #include <CGAL/IO/Color.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/IO/OBJ.h>
 #include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/boost/graph/IO/PLY.h>
@@ -93,6 +92,22 @@ inline mode_t new_file_mode()
   return mode;
 }
 
+/// Splits every face that is not a triangle into a fan: always possible, whatever
+/// the geometry (where the constrained triangulation gives up).
+template <class PolygonMesh>
+void fan_triangulate(PolygonMesh& mesh)
+{
+  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> polygons;
+  for(auto f : faces(mesh))
+    if(degree(f, mesh) > 3)
+      polygons.push_back(f);
+  for(auto f : polygons) {
+    auto h = halfedge(f, mesh);
+    for(std::size_t corners = degree(f, mesh); corners > 3; --corners) // each split cuts off a triangle
+      h = prev(CGAL::Euler::split_face(h, next(next(h, mesh), mesh), mesh), mesh);
+  }
+}
+
 /// A copy of `mesh` whose faces are all triangles (STL stores triangles only): each
 /// polygon split into a fan from its first corner. Not CGAL's triangulation, which on
 /// a non-planar polygon of the primal remesh can cascade into exact intersections for
@@ -101,7 +116,7 @@ template <class Mesh>
 Mesh triangulated_copy(const Mesh& mesh)
 {
   Mesh triangles = mesh;
-  CGAL::Range_space_remeshing::internal::fan_triangulate(triangles);
+  fan_triangulate(triangles);
   return triangles;
 }
 

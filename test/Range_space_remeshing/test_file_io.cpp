@@ -343,6 +343,7 @@ void test_written_files_read_back()
     std::string content;
     in >> content;
     CHECK(content == "original");
+    std::remove("keep.off");
   }
 }
 

@@ -13,7 +13,6 @@
 #include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
-#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <cmath>
@@ -172,22 +171,6 @@ void repair_soup(PointRange& points, PolygonRange& polygons, Input_repair_statis
                            CGAL::parameters::visitor(Counting_orientation_visitor(&statistics)));
 }
 
-/// Splits every face that is not a triangle into a fan: always possible, whatever
-/// the geometry (where the constrained triangulation gives up).
-template <class PolygonMesh>
-void fan_triangulate(PolygonMesh& mesh)
-{
-  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> polygons;
-  for(auto f : faces(mesh))
-    if(degree(f, mesh) > 3)
-      polygons.push_back(f);
-  for(auto f : polygons) {
-    auto h = halfedge(f, mesh);
-    for(std::size_t corners = degree(f, mesh); corners > 3; --corners) // each split cuts off a triangle
-      h = prev(CGAL::Euler::split_face(h, next(next(h, mesh), mesh), mesh), mesh);
-  }
-}
-
 /// Splits every polygon of the soup into triangles, in the soup: a quadrilateral
 /// along its shorter diagonal, a larger polygon into a fan from its first corner.
 /// Not CGAL's `triangulate_faces()`: on a non-planar polygon whose projection crosses
@@ -328,8 +311,10 @@ Input_repair_statistics prepare_input(PointRange& points, PolygonRange& polygons
     internal::repair_soup(points, polygons, statistics);
     if(polygons.empty())
       throw Remeshing_error("the input has no face left after removing its degenerate faces");
-    if(!PMP::is_polygon_soup_a_polygon_mesh(polygons))
-      throw Remeshing_error("the input could not be repaired into a 2-manifold mesh");
+    // points left at the same position are apart in the mesh: what CGAL's repair keeps
+    const std::string left = internal::soup_problem(points, polygons);
+    if(!left.empty() && left != internal::coinciding_points)
+      throw Remeshing_error("the input could not be repaired into a 2-manifold mesh: " + left);
   }
   clear(mesh);
   PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
