@@ -96,7 +96,11 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
   internal::Tangent_planes_pool planes_pool;
   auto slots = get(CGAL::dynamic_vertex_property_t<std::size_t>(), quads);
   const internal::Pooled_tangent_planes_map<decltype(slots)> planes(slots, planes_pool);
+#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0) // copies a default value, T() (uninitialised) if not given
+  auto normals = get(CGAL::dynamic_vertex_property_t<Out_vector>(), quads, Out_vector(CGAL::NULL_VECTOR));
+#else
   auto normals = get(CGAL::dynamic_vertex_property_t<Out_vector>(), quads);
+#endif
   const Dual_placement placement =
       choose_parameter(get_parameter(np, internal_np::dual_placement), Dual_placement::QEM);
   const auto dual_in = parameters::dual_placement(

@@ -798,7 +798,7 @@ private:
     bool inserted = false;
     const std::uint32_t id = table_.find_or_insert(
         key, std::uint32_t(vertices_.size()),
-        [this](std::uint32_t id) { return key_of(vertices_[id]); }, inserted);
+        [this](std::uint32_t stored) { return key_of(vertices_[stored]); }, inserted);
     if(!inserted)
       return id;
     check_cap();
@@ -912,7 +912,7 @@ private:
     bool inserted = false;
     const std::uint32_t id = table_.find_or_insert(
         boundary_key(face_id, e, P, level), std::uint32_t(vertices_.size()),
-        [this](std::uint32_t id) { return key_of(vertices_[id]); }, inserted);
+        [this](std::uint32_t stored) { return key_of(vertices_[stored]); }, inserted);
     CGAL_assertion(inserted);
     check_cap();
     Vertex v;
