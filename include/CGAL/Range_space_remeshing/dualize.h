@@ -606,7 +606,7 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
   constexpr bool wants_normals =
       !is_default_parameter<NamedParametersOut, CGAL::internal_np::vertex_normal_map_t>::value;
   auto out_normals = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_normal_map),
-                                      CGAL::Constant_property_map<dual_vertex, Out_vector>());
+                                      CGAL::Constant_property_map<dual_vertex, Out_vector>(CGAL::NULL_VECTOR));
   constexpr bool wants_planes =
       !is_default_parameter<NamedParametersOut, internal_np::vertex_tangent_planes_map_t>::value;
   auto out_planes = choose_parameter(get_parameter(np_out, internal_np::vertex_tangent_planes_map),
