@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // What the short examples share: read the input named on the command line (or make
 // a sphere), and its bounding-box diagonal, the unit of their cell sizes.

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The command-line program's reader: OFF (with C, N, ST, 4 and n prefixes), PLY
 // (ascii, binary little and big endian, any element order and property types),

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The command-line program's writer: a mesh goes to a new temporary file next to
 // its destination (created exclusively: an existing file or a link planted at its

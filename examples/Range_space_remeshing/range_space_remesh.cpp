@@ -15,6 +15,7 @@
 #include <CGAL/Range_space_remeshing/insert_crease_triangles.h>
 #include <CGAL/Range_space_remeshing/prepare_input.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
+#include <CGAL/Range_space_remeshing/version.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -145,6 +146,7 @@ const char* usage =
     "  --strict              refuse an input that needs repairs instead of repairing it\n"
     "  --ascii               write PLY and STL as text (default: binary)\n"
     "  --help                print this help and exit\n"
+    "  --version             print the program's and CGAL's versions and exit\n"
     "  --                    ends the options: INPUT and OUTPUT may start with '-'\n"
     "\n"
     "exit status: 0 on success, 2 on bad arguments, unusable input or the time limit,\n"
@@ -274,6 +276,9 @@ Options parse_arguments(int argc, char** argv)
     };
     if(arg == "--help" || arg == "-h") {
       std::cout << usage;
+      std::exit(EXIT_SUCCESS);
+    } else if(arg == "--version") {
+      std::cout << "range_space_remesh " RANGE_SPACE_REMESHING_VERSION_STR " (CGAL " CGAL_VERSION_STR ")\n";
       std::exit(EXIT_SUCCESS);
     } else if(arg == "--map") {
       options.map = value();

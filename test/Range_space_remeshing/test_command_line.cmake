@@ -1,5 +1,6 @@
 # Tests of the command-line program: run with
-#   cmake -DCLI=... -DCLI_SOURCE=... -DMESH_DIR=... -DDATA_DIR=... -DWORK_DIR=... -P test_command_line.cmake
+#   cmake -DCLI=... -DCLI_SOURCE=... -DMESH_DIR=... -DDATA_DIR=... -DWORK_DIR=...
+#         -DVERSION=<project()'s> -DCGAL_VERSION=<find_package(CGAL)'s> -P test_command_line.cmake
 cmake_minimum_required(VERSION 3.19)
 
 set(failures 0)
@@ -73,6 +74,14 @@ foreach(option ${parsed})
     math(EXPR failures "${failures} + 1")
   endif()
 endforeach()
+
+# --version: the package's version (version.h, which configuring checks against
+# project()) and the CGAL compiled with, on one line
+run(0 NONE --version)
+if(NOT out STREQUAL "range_space_remesh ${VERSION} (CGAL ${CGAL_VERSION})\n")
+  message(SEND_ERROR "--version printed '${out}', expected 'range_space_remesh ${VERSION} (CGAL ${CGAL_VERSION})'")
+  math(EXPR failures "${failures} + 1")
+endif()
 
 run(0 a.off --stats --cell-size 0.01 ${elephant} a.off)
 string(JSON output_vertices GET "${out}" output_vertices)

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The command-line program's files: its reader (mesh_file_reader.h) on every format
 // and on count bombs, prepare_input()'s repairs, and its writer (mesh_file_writer.h)

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Author(s) : Range_space_remeshing team
 
@@ -563,7 +563,7 @@ Dual_statistics build_dual(const PolygonMesh& primal, QuadMesh& quads, const Nam
   constexpr bool wants_normals =
       !is_default_parameter<NamedParametersOut, CGAL::internal_np::vertex_normal_map_t>::value;
   auto out_normals = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_normal_map),
-                                      CGAL::Constant_property_map<dual_vertex, Out_vector>());
+                                      CGAL::Constant_property_map<dual_vertex, Out_vector>(CGAL::NULL_VECTOR));
   constexpr bool wants_planes =
       !is_default_parameter<NamedParametersOut, internal_np::vertex_tangent_planes_map_t>::value;
   auto out_planes = choose_parameter(get_parameter(np_out, internal_np::vertex_tangent_planes_map),

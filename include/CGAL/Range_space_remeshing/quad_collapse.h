@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Author(s) : Range_space_remeshing team
 
@@ -158,7 +158,7 @@ Collapse_statistics collapse_quads(PolygonMesh& mesh,
   constexpr bool has_planes = !is_default_parameter<NamedParameters, internal_np::vertex_tangent_planes_map_t>::value;
   constexpr bool has_normals = !is_default_parameter<NamedParameters, CGAL::internal_np::vertex_normal_map_t>::value;
   auto normal_map = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_normal_map),
-                                     CGAL::Constant_property_map<vertex_descriptor, Vector>());
+                                     CGAL::Constant_property_map<vertex_descriptor, Vector>(CGAL::NULL_VECTOR));
 
   // Unit normals, by vertex index: what the projection of merged vertices uses.
   std::vector<internal::Vec3> normals(index_bound);

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Author(s) : Range_space_remeshing team
 
@@ -240,7 +240,7 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
   constexpr bool has_normals =
       !is_default_parameter<NamedParameters, CGAL::internal_np::vertex_normal_map_t>::value;
   auto normal_map = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_normal_map),
-                                     CGAL::Constant_property_map<vertex_descriptor, Vector>());
+                                     CGAL::Constant_property_map<vertex_descriptor, Vector>(CGAL::NULL_VECTOR));
   auto vertex_index = CGAL::get_initialized_vertex_index_map(mesh, np);
   constexpr bool has_planes =
       !is_default_parameter<NamedParameters, internal_np::vertex_tangent_planes_map_t>::value;

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Author(s) : Range_space_remeshing team
 
@@ -79,7 +79,11 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
   Tangent_planes_pool planes_pool;
   auto slots = get(CGAL::dynamic_vertex_property_t<std::size_t>(), quads);
   const Pooled_tangent_planes_map<decltype(slots)> planes(slots, planes_pool);
+#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0) // copies a default value, T() (uninitialised) if not given
+  auto normals = get(CGAL::dynamic_vertex_property_t<Out_vector>(), quads, Out_vector(CGAL::NULL_VECTOR));
+#else
   auto normals = get(CGAL::dynamic_vertex_property_t<Out_vector>(), quads);
+#endif
   const Dual_placement placement =
       choose_parameter(get_parameter(np, internal_np::dual_placement), Dual_placement::QEM);
   const auto dual_in = parameters::dual_placement(placement)

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Fuzz target: the command-line program's reader on any bytes, prepare_input() on
 // what it reads, and its writers on what that gives, each output read back: text

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Fuzz target: the command-line program's input path (its OFF, OBJ, PLY and STL
 // reader, then prepare_input()'s check and repair) and the remesher on what it accepts, with a map

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // What a fuzz target built without libFuzzer does: replay the files given on its
 // command line (its seed corpus and the reproducers of past findings), as a ctest.

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Author(s) : Range_space_remeshing team
 
@@ -838,7 +838,7 @@ private:
     bool inserted = false;
     const std::uint32_t id = table_.find_or_insert(
         key, std::uint32_t(vertices_.size()),
-        [this](std::uint32_t id) { return key_of(vertices_[id]); }, inserted);
+        [this](std::uint32_t stored) { return key_of(vertices_[stored]); }, inserted);
     if(!inserted)
       return id;
     check_cap();
@@ -952,7 +952,7 @@ private:
     bool inserted = false;
     const std::uint32_t id = table_.find_or_insert(
         boundary_key(face_id, e, P, level), std::uint32_t(vertices_.size()),
-        [this](std::uint32_t id) { return key_of(vertices_[id]); }, inserted);
+        [this](std::uint32_t stored) { return key_of(vertices_[stored]); }, inserted);
     CGAL_assertion(inserted);
     check_cap();
     Vertex v;

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Author(s) : Range_space_remeshing team
 

@@ -1,5 +1,5 @@
 // Copyright (c) 2026 Range_space_remeshing contributors.
-// SPDX-License-Identifier: GPL-3.0-or-later OR LicenseRef-Commercial
+// SPDX-License-Identifier: GPL-3.0-or-later
 //
 // Author(s) : Range_space_remeshing team
 
@@ -168,11 +168,11 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
       !CGAL::parameters::is_default_parameter<NamedParametersOut,
                                               CGAL::internal_np::vertex_normal_map_t>::value;
   auto normal_map = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_normal_map),
-                                     CGAL::Constant_property_map<out_vertex, Out_vector>());
+                                     CGAL::Constant_property_map<out_vertex, Out_vector>(CGAL::NULL_VECTOR));
   constexpr bool wants_crease_normals =
       !is_default_parameter<NamedParametersOut, internal_np::vertex_crease_normal_map_t>::value;
   auto crease_normal_map = choose_parameter(get_parameter(np_out, internal_np::vertex_crease_normal_map),
-                                            CGAL::Constant_property_map<out_vertex, Out_vector>());
+                                            CGAL::Constant_property_map<out_vertex, Out_vector>(CGAL::NULL_VECTOR));
   constexpr bool needs_corner_normals = wants_normals || wants_crease_normals;
   Lazy_vertex_normals<TriangleMesh, VPM, VertexIndexMap> input_normals(tm, vpm, vertex_index);
   // the caller's input normals, if given (np_in): interpolated instead of computed
