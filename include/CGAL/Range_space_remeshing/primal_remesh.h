@@ -328,9 +328,9 @@ std::unique_ptr<Primal_complex> trace_primal_complex(const TriangleMesh& tm, Tra
   return complex;
 }
 
-// The whole run at cell size `cell_size`; `inspect(tracer, complex)` sees the
-// intermediate structures before the output is written (tests check the invariants
-// there).
+// The whole run at cell size `cell_size`, on a mesh with faces (the callers check);
+// `inspect(tracer, complex)` sees the intermediate structures before the output is
+// written (tests check the invariants there).
 template <class TriangleMesh, class PolygonMesh, class NamedParametersIn, class NamedParametersOut,
           class Inspector, class ConcurrencyTag>
 Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMesh& out,
@@ -376,8 +376,6 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
   for(double x : origin)
     if(!std::isfinite(x))
       throw Remeshing_error("the grid origin must be finite", Remeshing_error::Kind::BAD_PARAMETER);
-  if(num_faces(tm) == 0)
-    throw Remeshing_error("the input mesh has no face");
 
   const bool preserve = choose_parameter(get_parameter(np_in, internal_np::preserve_topology), false);
   const bool check = preserve || choose_parameter(get_parameter(np_in, internal_np::check_topology), false);

@@ -199,7 +199,7 @@ public:
     std::size_t vertices_before = vertices_.size();
     for(std::size_t position = 0; position < n; ++position) {
       // the work: a face, and the vertices it holds; the second half of the scan
-      meter.add(1 + vertices_.size() - vertices_before, 0.5 + 0.5 * double(position) / double(n));
+      meter.add(1 + vertices_.size() - vertices_before, [&] { return 0.5 + 0.5 * double(position) / double(n); });
       vertices_before = vertices_.size();
       if(position + scan_lookahead < n)
         prefetch_corners(all_face_ids_[position + scan_lookahead]);
@@ -268,8 +268,9 @@ public:
   void map_all_vertices()
   {
     std::size_t done = 0;
+    const std::size_t total = 2 * num_vertices(tm_); // the mapping is the scan's first half
     for(vertex_descriptor v : vertices(tm_)) {
-      progress_->report_every(Remeshing_stage::SCAN, done++, 2 * num_vertices(tm_));
+      progress_->report_every(Remeshing_stage::SCAN, done++, total);
       map_in_place(v);
     }
     number_of_mapped_ = mapped_.size();
@@ -447,7 +448,7 @@ public:
     for(std::size_t traced = 0; !queue_.empty(); ++traced) {
       // the work: the steps of the arcs (one face each); the queue holds every vertex
       // after a complete scan, the seeded tracing adds more
-      meter.add(1 + tracing_steps_ - steps_before, double(traced) / double(traced + queue_.size()));
+      meter.add(1 + tracing_steps_ - steps_before, [&] { return double(traced) / double(traced + queue_.size()); });
       steps_before = tracing_steps_;
       const std::uint32_t v = queue_.front();
       queue_.pop_front();
@@ -1592,8 +1593,7 @@ private:
   double cell_size_;
   std::size_t maximum_vertices_;
   Predicates predicates_;
-  Progress no_progress_;
-  const Progress* progress_ = &no_progress_;
+  const Progress* progress_ = &Progress::none();
 
   // The arrays by input vertex or face are zeroed lazily, or not at all where each
   // entry is written before it is read: a seeded run touches only a fraction of them

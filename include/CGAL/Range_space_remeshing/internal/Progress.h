@@ -15,6 +15,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <type_traits>
 #include <utility>
 
 namespace CGAL {
@@ -62,6 +63,13 @@ public:
       report(stage, total > 0 ? double(done) / double(total) : 1.0);
   }
 
+  /// The progress without a visitor, for engines run without one.
+  static const Progress& none()
+  {
+    static const Progress nobody;
+    return nobody;
+  }
+
 private:
   std::function<bool(Remeshing_stage, double)> visitor_;
 };
@@ -75,13 +83,19 @@ class Work_meter
 public:
   Work_meter(const Progress& progress, Remeshing_stage stage) : progress_(progress), stage_(stage) {}
 
-  /// Counts `units` of work done, `fraction` of the stage reached.
-  void add(std::size_t units, double fraction)
+  /// Counts `units` of work done; `fraction` (a number, or a callable giving it) is
+  /// how far the stage is, evaluated only when reported: the loops that count are the
+  /// engines' innermost.
+  template <class Fraction>
+  void add(std::size_t units, const Fraction& fraction)
   {
     work_ += units;
     if(work_ >= next_report_) {
       next_report_ = work_ + Progress::interval;
-      progress_.report(stage_, fraction);
+      if constexpr(std::is_invocable_v<Fraction>)
+        progress_.report(stage_, fraction());
+      else
+        progress_.report(stage_, fraction);
     }
   }
 

@@ -94,8 +94,10 @@ public:
   /// dipoles (`walk_dipoles()`); what it changes starts the passes again.
   Collapse_statistics run(int maximum_passes, const Progress& progress)
   {
+    progress_ = &progress;
+    maximum_passes_ = maximum_passes;
     try {
-      return run_passes(maximum_passes, progress);
+      return run_passes();
     } catch(const Remeshing_cancelled&) {
       remove_unlinked_elements(); // each collapse and rotation is whole: the mesh is valid
       throw;
@@ -103,39 +105,42 @@ public:
   }
 
 private:
-  Collapse_statistics run_passes(int maximum_passes, const Progress& progress)
+  /// Tells the visitor that the passes before this one are done.
+  void report_pass() const
+  {
+    progress_->report(Remeshing_stage::COLLAPSE, double(pass_ - 1) / double(maximum_passes_));
+  }
+
+  Collapse_statistics run_passes()
   {
     Collapse_statistics stats;
     std::vector<Candidate> candidates;
-    progress_ = &progress;
-    maximum_passes_ = maximum_passes;
     stats.removed_doublets = remove_doublets();
-    progress.report(Remeshing_stage::COLLAPSE, 0);
+    progress_->report(Remeshing_stage::COLLAPSE, 0);
     std::vector<face_descriptor> to_examine;
     for(face_descriptor f : faces(mesh_))
       if(!removed_faces_[get(face_index_, f)])
         to_examine.push_back(f);
-    for(int pass = 1; pass <= maximum_passes; ++pass) {
+    for(int pass = 1; pass <= maximum_passes_; ++pass) {
       const bool walk = to_examine.empty();
       if(walk && !rotate_edges_)
         break;
-      progress.report(Remeshing_stage::COLLAPSE, double(pass - 1) / double(maximum_passes));
-      ++stats.passes;
       pass_ = pass;
+      report_pass();
+      ++stats.passes;
       touched_ = &to_examine;
       if(walk) {
         if(walk_dipoles(stats) == 0)
           break;
       } else {
         collect_candidates(to_examine, candidates);
-        progress.report(Remeshing_stage::COLLAPSE, double(pass - 1) / double(maximum_passes));
+        report_pass();
         sort_for_sweep(candidates);
-        progress.report(Remeshing_stage::COLLAPSE, double(pass - 1) / double(maximum_passes));
+        report_pass();
         to_examine.clear();
         for(std::size_t c = 0; c < candidates.size(); ++c) {
-          progress.report_every(Remeshing_stage::COLLAPSE,
-                                std::size_t(pass - 1) * candidates.size() + c,
-                                std::size_t(maximum_passes) * candidates.size());
+          progress_->report_every(Remeshing_stage::COLLAPSE, std::size_t(pass - 1) * candidates.size() + c,
+                                  std::size_t(maximum_passes_) * candidates.size());
           try_candidate(candidates[c], stats);
         }
       }
@@ -143,7 +148,7 @@ private:
         return get(face_index_, f) < get(face_index_, g);
       });
     }
-    progress.report(Remeshing_stage::COLLAPSE, 1);
+    progress_->report(Remeshing_stage::COLLAPSE, 1);
     remove_unlinked_elements();
     return stats;
   }
@@ -489,7 +494,8 @@ private:
     Work_meter meter(*progress_, Remeshing_stage::COLLAPSE);
     std::size_t walked = 0;
     for(face_descriptor f : quads) {
-      meter.add(1, (double(pass_ - 1) + double(walked++) / double(quads.size())) / double(maximum_passes_));
+      meter.add(1, [&] { return (double(pass_ - 1) + double(walked) / double(quads.size())) / double(maximum_passes_); });
+      ++walked;
       // a collapse made possible by an earlier walk may have removed it; and around a
       // quad of regular corners, a rotation of one of its edges raises the energy
       if(!is_live_quad(f) || has_regular_corners(f))
@@ -989,7 +995,7 @@ private:
   bool touching_ = true; // whether operations queue the faces they change
   std::vector<int> valences_;                // by vertex index
   std::vector<std::uint8_t> on_border_;      // by vertex index
-  const Progress* progress_ = nullptr; // of the run
+  const Progress* progress_ = &Progress::none(); // of the run
   int maximum_passes_ = 1;
   std::size_t pass_ = 0;
   std::vector<face_descriptor>* touched_ = nullptr; // the next pass's faces

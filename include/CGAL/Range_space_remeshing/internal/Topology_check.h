@@ -420,7 +420,7 @@ private:
       if(is_lost(f))
         continue;
       cells_of_face(f, cells);
-      meter.add(1 + cells.size(), 0.2 + 0.5 * f / number_of_faces_);
+      meter.add(1 + cells.size(), [&] { return 0.2 + 0.5 * f / number_of_faces_; });
       for(const Levels& c : cells)
         ++excess[c];
       const auto& corners = tracer_.corners_of(f);
@@ -573,7 +573,7 @@ private:
       if(is_lost(f))
         continue;
       cells_of_face(f, cells);
-      meter.add(1 + cells.size(), 0.7 + 0.3 * f / number_of_faces_);
+      meter.add(1 + cells.size(), [&] { return 0.7 + 0.3 * f / number_of_faces_; });
       for(const Levels& c : cells) {
         const auto found = defect_of_cell.find(c);
         if(found != defect_of_cell.end())
@@ -583,8 +583,7 @@ private:
     return defect_of_cell.size();
   }
 
-  Progress no_progress_;
-  const Progress* progress_ = &no_progress_;
+  const Progress* progress_ = &Progress::none();
   Tracer& tracer_;
   const Primal_complex& complex_;
   std::uint32_t number_of_faces_;
