@@ -5,9 +5,11 @@
 #include "test_support.h"
 
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
+#include <CGAL/Range_space_remeshing/copy_in_spatial_order.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <algorithm>
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -226,6 +228,63 @@ void test_error_kinds(const Mesh& sphere)
             Kind::BAD_PARAMETER));
 }
 
+/// Counts out of their domain are refused before any work (the visitor is never called):
+/// a negative count converted to an unsigned one, or a target the cap forbids, would
+/// otherwise start a search that cannot end well.
+void test_bad_counts(const Mesh& sphere)
+{
+  using Kind = RSR::Remeshing_error::Kind;
+  namespace P = RSR::parameters;
+  int calls = 0;
+  const auto count_calls = [&calls](RSR::Remeshing_stage, double) { return ++calls > 0; };
+  Mesh out;
+  const auto refused = [&](const auto& run) {
+    calls = 0;
+    const bool bad_parameter = throws_kind(run, Kind::BAD_PARAMETER);
+    return bad_parameter && calls == 0;
+  };
+  CHECK(refused([&] { RSR::remesh(sphere, out, P::number_of_target_vertices(-5).progress_visitor(count_calls)); }));
+  CHECK(refused([&] { RSR::remesh(sphere, out, P::number_of_target_vertices(2.5).progress_visitor(count_calls)); }));
+  CHECK(refused([&] { RSR::remesh(sphere, out, P::number_of_target_vertices(100000000).progress_visitor(count_calls)); }));
+  CHECK(refused([&] {
+    RSR::primal_remesh(sphere, out, P::maximum_number(1000).number_of_target_vertices(5000).progress_visitor(count_calls));
+  }));
+  CHECK(refused([&] { RSR::primal_remesh(sphere, out, P::maximum_number(-1).progress_visitor(count_calls)); }));
+  CHECK(refused([&] { RSR::remesh(sphere, out, P::number_of_relaxation_steps(-1).progress_visitor(count_calls)); }));
+  CHECK(refused([&] { RSR::remesh(sphere, out, P::number_of_collapse_passes(-1).progress_visitor(count_calls)); }));
+  // a target at the cap is allowed
+  Mesh at_cap;
+  RSR::remesh(sphere, at_cap, P::maximum_number(100000).number_of_target_vertices(500));
+  CHECK(num_faces(at_cap) > 0);
+
+  Mesh quads;
+  RSR::remesh(sphere, quads, P::number_of_relaxation_steps(0));
+  const Mesh before = quads;
+  CHECK(refused([&] { RSR::collapse_quads(quads, P::number_of_collapse_passes(-2).progress_visitor(count_calls)); }));
+  CHECK(refused([&] { RSR::relax_on_tangent_planes(quads, P::number_of_relaxation_steps(-1).progress_visitor(count_calls)); }));
+  CHECK_EQ(num_vertices(quads), num_vertices(before));
+  CHECK(std::equal(quads.vertices().begin(), quads.vertices().end(), before.vertices().begin(),
+                   [&](auto v, auto w) { return quads.point(v) == before.point(w); }));
+}
+
+/// An output that is the input is refused, and the mesh is left as it was: the output is
+/// emptied before the input is read.
+void test_same_mesh(const Mesh& sphere)
+{
+  using Kind = RSR::Remeshing_error::Kind;
+  Mesh mesh = sphere;
+  CHECK(throws_kind([&] { RSR::remesh(mesh, mesh); }, Kind::BAD_PARAMETER));
+  CHECK(throws_kind([&] { RSR::primal_remesh(mesh, mesh); }, Kind::BAD_PARAMETER));
+  CHECK(throws_kind([&] { RSR::copy_in_spatial_order(mesh, mesh); }, Kind::BAD_PARAMETER));
+  CHECK_EQ(num_faces(mesh), num_faces(sphere));
+  CHECK_EQ(num_vertices(mesh), num_vertices(sphere));
+  Mesh primal;
+  RSR::primal_remesh(sphere, primal);
+  const auto primal_faces = num_faces(primal);
+  CHECK(throws_kind([&] { RSR::dualize(primal, primal); }, Kind::BAD_PARAMETER));
+  CHECK_EQ(num_faces(primal), primal_faces);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -243,5 +302,7 @@ int main(int argc, char** argv)
   test_progress(elephant);
   test_cancel(elephant);
   test_error_kinds(sphere);
+  test_bad_counts(sphere);
+  test_same_mesh(sphere);
   return report("test_parameters");
 }

@@ -80,7 +80,7 @@ copy them.
       \cgalParamDefault{`get(CGAL::vertex_point, out)`}
     \cgalParamNEnd
   \cgalNamedParamsEnd
-\throws Remeshing_error if a point of a face has a NaN or infinite coordinate (`out`
+\throws Remeshing_error if `out` is `tm`, if a point of a face has a NaN or infinite coordinate (`out`
   is then unchanged), or if a face of `tm` cannot be added to `out` (`tm` is not a
   valid polygon mesh; `out` then holds a part of the copy).
 */
@@ -105,6 +105,7 @@ void copy_in_spatial_order(const PolygonMesh& tm, PolygonMeshOut& out,
   using Out_point = typename boost::property_traits<
       typename GetVertexPointMap<PolygonMeshOut, NamedParametersOut>::type>::value_type;
   using Sorting_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
+  internal::refuse_same_mesh(tm, out, "copy_in_spatial_order()");
   using In_point = typename boost::property_traits<
       typename GetVertexPointMap<PolygonMesh, NamedParametersIn>::const_type>::value_type;
 

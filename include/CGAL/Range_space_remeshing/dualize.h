@@ -972,7 +972,7 @@ well placed. Its normal is the normalised average of the vertices' normals.
       \cgalParamDefault{none}
     \cgalParamNEnd
   \cgalNamedParamsEnd
-\throws Remeshing_error if `primal` is empty.
+\throws Remeshing_error if `primal` is empty, or is `quads`.
 */
 template <class PolygonMesh, class QuadMesh,
           class NamedParametersIn = CGAL::parameters::Default_named_parameters,
@@ -991,6 +991,7 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
   static_assert(internal::check_named_parameters<struct dualize_out, NamedParametersOut, cgal_np::vertex_point_t,
                                                  cgal_np::vertex_normal_map_t, np::vertex_tangent_planes_map_t,
                                                  cgal_np::vertex_color_map_t>());
+  internal::refuse_same_mesh(primal, quads, "dualize()");
   const internal::Progress progress = internal::progress_of(np_in);
   return internal::emptied_on_cancel(
       quads, [&] { return internal::build_dual(primal, quads, np_in, np_out, progress); });

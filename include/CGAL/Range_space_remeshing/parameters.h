@@ -15,8 +15,14 @@
 // the package reads, its own tags and CGAL's, in any order. Each public function checks
 // at compile time that it reads every parameter it is given.
 
+#include <CGAL/Range_space_remeshing/Remeshing_error.h>
+
 #include <CGAL/Named_function_parameters.h>
 
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
 #include <type_traits>
 
 namespace CGAL {
@@ -206,6 +212,41 @@ constexpr bool check_named_parameters()
 {
   using Tags = typename Tags_of_impl<typename NamedParameters::base>::type;
   return Check_named_parameters<Function, Tags, Accepted...>::value;
+}
+
+/// The value of the count parameter `tag` of `np` (`default_value` if not given), refused
+/// (`BAD_PARAMETER`) if it is negative, not whole, or above `maximum`: converted as it
+/// stands, `number_of_target_vertices(-5)` would ask for 2^64 - 5 vertices and
+/// `number_of_relaxation_steps(-1)` would run no step without a word.
+template <class NamedParameters, class Tag>
+std::size_t count_parameter(const NamedParameters& np, Tag tag, std::size_t default_value, const char* name,
+                            std::size_t maximum = std::size_t(std::numeric_limits<int>::max()))
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto value = choose_parameter(get_parameter(np, tag), default_value);
+  using Value = std::decay_t<decltype(value)>;
+  static_assert(std::is_arithmetic<Value>::value, "a count parameter takes a number");
+  bool in_range;
+  if constexpr(std::is_floating_point<Value>::value)
+    in_range = value >= 0 && value == std::floor(value) && value <= double(maximum);
+  else if constexpr(std::is_signed<Value>::value)
+    in_range = value >= 0 && std::make_unsigned_t<Value>(value) <= maximum;
+  else
+    in_range = value <= maximum;
+  if(!in_range)
+    throw Remeshing_error(std::string(name) + " must be a whole number from 0 to " + std::to_string(maximum),
+                          Remeshing_error::Kind::BAD_PARAMETER);
+  return std::size_t(value);
+}
+
+/// Refuses an output mesh that is the input: it is emptied before the input is read.
+template <class InputMesh, class OutputMesh>
+void refuse_same_mesh(const InputMesh& in, const OutputMesh& out, const char* function)
+{
+  if(static_cast<const void*>(&in) == static_cast<const void*>(&out))
+    throw Remeshing_error(std::string(function) + ": the output mesh must not be the input mesh",
+                          Remeshing_error::Kind::BAD_PARAMETER);
 }
 
 } // namespace internal

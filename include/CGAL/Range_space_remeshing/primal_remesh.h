@@ -57,6 +57,29 @@ constexpr double default_relative_cell_size = 0.01;
 
 namespace internal {
 
+/// The cap on the output's vertices: `maximum_number`, or the default.
+template <class NamedParameters>
+std::size_t maximum_vertices_of(const NamedParameters& np)
+{
+  return count_parameter(np, CGAL::internal_np::maximum_number, default_maximum_number_of_vertices, "maximum_number",
+                         std::numeric_limits<std::size_t>::max());
+}
+
+/// `number_of_target_vertices` (0 if not given), refused above the cap on the output: a
+/// count the cap forbids would only be searched for in vain.
+template <class NamedParameters>
+std::size_t target_vertices_of(const NamedParameters& np)
+{
+  const std::size_t target = count_parameter(np, internal_np::number_of_target_vertices, 0,
+                                             "number_of_target_vertices", std::numeric_limits<std::size_t>::max());
+  const std::size_t cap = maximum_vertices_of(np);
+  if(target > cap)
+    throw Remeshing_error("number_of_target_vertices (" + std::to_string(target) + ") is above maximum_number (" +
+                              std::to_string(cap) + "), the cap on the output's vertices",
+                          Remeshing_error::Kind::BAD_PARAMETER);
+  return target;
+}
+
 /// The range map of `np` (`range_map`), or the identity of the vertex point map.
 template <class TriangleMesh, class NamedParameters>
 struct Range_map_of
@@ -368,8 +391,7 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
   const Point_d origin = choose_parameter(get_parameter(np_in, internal_np::grid_origin), Point_d{});
   const Seeding_method seeding = choose_parameter(
       get_parameter(np_in, CGAL::internal_np::seeding_method), Seeding_method::COMPLETE_SCAN);
-  const std::size_t maximum_vertices = std::size_t(choose_parameter(
-      get_parameter(np_in, CGAL::internal_np::maximum_number), default_maximum_number_of_vertices));
+  const std::size_t maximum_vertices = maximum_vertices_of(np_in);
 
   if(!(cell_size > 0) || !std::isfinite(cell_size))
     throw Remeshing_error("the cell size must be a positive finite number", Remeshing_error::Kind::BAD_PARAMETER);
@@ -473,13 +495,11 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out, const Na
                               const NamedParametersOut& np_out, const Inspector& inspect,
                               ConcurrencyTag tag = ConcurrencyTag())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
+  refuse_same_mesh(tm, out, "primal_remesh()");
   if(num_faces(tm) == 0)
     throw Remeshing_error("the input mesh has no face");
   const Progress progress = progress_of(np_in);
-  const std::size_t target =
-      choose_parameter(get_parameter(np_in, internal_np::number_of_target_vertices), std::size_t(0));
+  const std::size_t target = target_vertices_of(np_in);
   remove_all_elements(out);
   return emptied_on_cancel(out, [&] {
     const double h = cell_size_of(tm, np_in);
@@ -639,7 +659,8 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
 \throws Remeshing_error on an empty mesh, a non-triangle face, a non-finite map value or cell size, a cell size so small that
   range coordinates exceed 2^29 cells, or when the output cap would be exceeded (also
   while `preserve_topology` refines the cell size), or with `preserve_topology` in the
-  seeded mode.
+  seeded mode; of kind `BAD_PARAMETER` if `out` is `tm`, or if `maximum_number` or
+  `number_of_target_vertices` is negative or not whole, or the target is above the cap.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default) or `CGAL::Parallel_tag`
   (needs TBB: link `CGAL::TBB_support`). In parallel, the complete scan maps the

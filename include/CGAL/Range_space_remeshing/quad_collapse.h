@@ -121,7 +121,8 @@ nothing or `number_of_collapse_passes` passes have run.
   \cgalNamedParamsEnd
 Border vertices are never moved nor merged (so no border cycle moves or joins
 another); their regular valence is 3 in the energy.
-\throws Remeshing_error if the mesh is empty.
+\throws Remeshing_error if the mesh is empty, or (`BAD_PARAMETER`) if
+  `number_of_collapse_passes` is negative or not whole.
 */
 template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 Collapse_statistics collapse_quads(PolygonMesh& mesh,
@@ -147,7 +148,8 @@ Collapse_statistics collapse_quads(PolygonMesh& mesh,
   using VPM = typename GetVertexPointMap<PolygonMesh, NamedParameters>::type;
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_property_map(CGAL::vertex_point, mesh));
-  const int passes = choose_parameter(get_parameter(np, internal_np::number_of_collapse_passes), 10);
+  const int passes = int(internal::count_parameter(np, internal_np::number_of_collapse_passes, 10,
+                                                   "number_of_collapse_passes"));
   const internal::Progress progress = internal::progress_of(np);
   const bool rotate_edges = choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true);
   auto constrained = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),

@@ -214,6 +214,8 @@ corners of the border (where it turns by more than 30 degrees) stay.
     \cgalParamNEnd
   \cgalNamedParamsEnd
 \returns the time taken, in milliseconds.
+\throws Remeshing_error of kind `BAD_PARAMETER` if `number_of_relaxation_steps` is
+  negative or not whole.
 */
 template <class PolygonMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
 double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CGAL::parameters::default_values())
@@ -231,7 +233,8 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
 
   const auto start = std::chrono::steady_clock::now();
   const internal::Progress progress = internal::progress_of(np);
-  const int iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 3);
+  const int iterations = int(internal::count_parameter(np, CGAL::internal_np::number_of_relaxation_steps, 3,
+                                                       "number_of_relaxation_steps"));
   using VPM = typename GetVertexPointMap<PolygonMesh, NamedParameters>::type;
   VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                              get_property_map(CGAL::vertex_point, mesh));

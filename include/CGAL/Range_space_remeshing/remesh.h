@@ -48,10 +48,35 @@ namespace internal {
 constexpr double dual_refinement_factor = 0.70710678118654752;
 constexpr int maximum_dual_refinements = 10;
 
+/// What `remesh()` does to the quads after the dual.
+struct Quad_improvement
+{
+  bool collapse = true;
+  bool rotate_edges = true;
+  std::size_t collapse_passes = 10;
+  std::size_t relaxation_steps = 3;
+};
+
+template <class NamedParameters>
+Quad_improvement quad_improvement_of(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Quad_improvement improvement;
+  improvement.collapse = choose_parameter(get_parameter(np, internal_np::quad_collapse), true);
+  improvement.rotate_edges = choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true);
+  improvement.collapse_passes = count_parameter(np, internal_np::number_of_collapse_passes,
+                                                improvement.collapse_passes, "number_of_collapse_passes");
+  improvement.relaxation_steps = count_parameter(np, CGAL::internal_np::number_of_relaxation_steps,
+                                                 improvement.relaxation_steps, "number_of_relaxation_steps");
+  return improvement;
+}
+
 /// One run of the pipeline at cell size `h`, into `quads` (empty).
 template <class ConcurrencyTag, class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
 Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, const NamedParameters& np,
-                            const NamedParametersOut& np_out, const Progress& progress)
+                            const NamedParametersOut& np_out, const Quad_improvement& improvement,
+                            const Progress& progress)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -123,15 +148,12 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
   if(stats.dual.quads + stats.dual.non_quads == 0)
     return finish();
 
-  if(choose_parameter(get_parameter(np, internal_np::quad_collapse), true))
-    stats.collapse = collapse_quads(
-        quads, stage_parameters.do_flip(choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true))
-                   .number_of_collapse_passes(
-                       choose_parameter(get_parameter(np, internal_np::number_of_collapse_passes), 10)));
-
-  const int steps = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_relaxation_steps), 3);
-  if(steps > 0)
-    stats.time_relaxation_ms = relax_on_tangent_planes(quads, stage_parameters.number_of_relaxation_steps(steps));
+  if(improvement.collapse)
+    stats.collapse = collapse_quads(quads, stage_parameters.do_flip(improvement.rotate_edges)
+                                               .number_of_collapse_passes(improvement.collapse_passes));
+  if(improvement.relaxation_steps > 0)
+    stats.time_relaxation_ms =
+        relax_on_tangent_planes(quads, stage_parameters.number_of_relaxation_steps(improvement.relaxation_steps));
   return finish();
 }
 
@@ -147,11 +169,11 @@ inline bool dual_lost_topology(const Dual_statistics& dual)
 template <class ConcurrencyTag, class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
 Remesh_statistics remesh_keeping_topology(double h, const TriangleMesh& tm, QuadMesh& quads,
                                           const NamedParameters& np, const NamedParametersOut& np_out,
-                                          const Progress& progress)
+                                          const Quad_improvement& improvement, const Progress& progress)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  Remesh_statistics stats = remesh_at<ConcurrencyTag>(h, tm, quads, np, np_out, progress);
+  Remesh_statistics stats = remesh_at<ConcurrencyTag>(h, tm, quads, np, np_out, improvement, progress);
   if(!choose_parameter(get_parameter(np, internal_np::preserve_topology), false))
     return stats;
   for(int refinement = 0; dual_lost_topology(stats.dual); ++refinement) {
@@ -160,7 +182,7 @@ Remesh_statistics remesh_keeping_topology(double h, const TriangleMesh& tm, Quad
                             Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
     remove_all_elements(quads);
     stats = remesh_at<ConcurrencyTag>(stats.primal.cell_size * dual_refinement_factor, tm, quads, np, np_out,
-                                      progress);
+                                      improvement, progress);
   }
   return stats;
 }
@@ -174,22 +196,21 @@ template <class ConcurrencyTag, class TriangleMesh, class QuadMesh, class NamedP
 Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const NamedParameters& np,
                               const NamedParametersOut& np_out)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
+  refuse_same_mesh(tm, quads, "remesh()");
   if(num_faces(tm) == 0)
     throw Remeshing_error("the input mesh has no face");
-  const internal::Progress progress = internal::progress_of(np);
-  const std::size_t target =
-      choose_parameter(get_parameter(np, internal_np::number_of_target_vertices), std::size_t(0));
-  internal::remove_all_elements(quads);
-  return internal::emptied_on_cancel(quads, [&] {
-    const double h = internal::cell_size_of(tm, np);
+  const Progress progress = progress_of(np);
+  const std::size_t target = target_vertices_of(np);
+  const Quad_improvement improvement = quad_improvement_of(np); // refused before the first run
+  remove_all_elements(quads);
+  return emptied_on_cancel(quads, [&] {
+    const double h = cell_size_of(tm, np);
     if(target == 0)
-      return internal::remesh_keeping_topology<ConcurrencyTag>(h, tm, quads, np, np_out, progress);
+      return remesh_keeping_topology<ConcurrencyTag>(h, tm, quads, np, np_out, improvement, progress);
     Remesh_statistics stats;
-    internal::search_cell_size(h, target, [&](double h_try) {
-      internal::remove_all_elements(quads);
-      stats = internal::remesh_keeping_topology<ConcurrencyTag>(h_try, tm, quads, np, np_out, progress);
+    search_cell_size(h, target, [&](double h_try) {
+      remove_all_elements(quads);
+      stats = remesh_keeping_topology<ConcurrencyTag>(h_try, tm, quads, np, np_out, improvement, progress);
       return std::size_t(num_vertices(quads));
     });
     return stats;
@@ -289,8 +310,9 @@ empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
   \cgalNamedParamsEnd
 
 \returns what each stage did.
-\throws Remeshing_error as `primal_remesh()` does; `Remeshing_cancelled` when the visitor
-  asks to stop.
+\throws Remeshing_error as `primal_remesh()` does, and of kind `BAD_PARAMETER` if
+  `number_of_collapse_passes` or `number_of_relaxation_steps` is negative or not whole
+  (before any work); `Remeshing_cancelled` when the visitor asks to stop.
 */
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class QuadMesh,
           class NamedParameters = CGAL::parameters::Default_named_parameters,
