@@ -8,10 +8,10 @@
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
 #include <CGAL/Range_space_remeshing/internal/Soup_check.h>
+#include <CGAL/Range_space_remeshing/internal/Soup_to_mesh.h>
 
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/orientation.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/boost/graph/helpers.h>
 
@@ -317,7 +317,7 @@ Input_repair_statistics prepare_input(PointRange& points, PolygonRange& polygons
       throw Remeshing_error("the input could not be repaired into a 2-manifold mesh: " + left);
   }
   clear(mesh);
-  PMP::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  internal::soup_to_mesh(points, polygons, mesh);
   if(!problem.empty())
     internal::orient_outward(mesh, statistics);
   if(!internal::has_a_non_degenerate_face(mesh))

@@ -58,6 +58,28 @@ private:
   std::vector<std::size_t> parent_;
 };
 
+/// The corners of a soup, numbered polygon by polygon: the point at each, and the
+/// next corner of its polygon.
+struct Soup_corners
+{
+  std::vector<std::size_t> point_of, next_of;
+
+  template <class PolygonRange>
+  explicit Soup_corners(const PolygonRange& polygons)
+  {
+    for(const auto& polygon : polygons) {
+      const std::size_t first = point_of.size();
+      for(std::size_t v : polygon) {
+        next_of.push_back(point_of.size() + 1);
+        point_of.push_back(v);
+      }
+      if(point_of.size() > first)
+        next_of.back() = first;
+    }
+  }
+  std::size_t size() const { return point_of.size(); }
+};
+
 /// An edge of a polygon: its points in increasing order in one key (the high 32 bits
 /// the lower point), the corner it starts at, and whether it goes up.
 struct Polygon_edge
@@ -65,8 +87,25 @@ struct Polygon_edge
   std::uint64_t key;
   std::uint32_t corner;
   bool forward;
-  bool operator<(const Polygon_edge& e) const { return key < e.key; }
+  bool operator<(const Polygon_edge& e) const { return key < e.key || (key == e.key && corner < e.corner); }
 };
+
+/// The edges of the polygons sorted by their points: one edge of the mesh is a run of
+/// equal keys, one polygon's (a border edge) or two going opposite ways (an inner edge)
+/// in an oriented 2-manifold; in a run, the corners keep their order.
+inline std::vector<Polygon_edge> sorted_polygon_edges(const Soup_corners& corners)
+{
+  if(corners.size() >= (std::size_t(1) << 32))
+    throw Remeshing_error("the input has more than 2^32 face corners");
+  std::vector<Polygon_edge> edges;
+  edges.reserve(corners.size());
+  for(std::size_t c = 0; c < corners.size(); ++c) {
+    const std::uint64_t from = corners.point_of[c], to = corners.point_of[corners.next_of[c]];
+    edges.push_back({((std::min)(from, to) << 32) | (std::max)(from, to), std::uint32_t(c), from < to});
+  }
+  std::sort(edges.begin(), edges.end());
+  return edges;
+}
 
 /// What `soup_problem()` says of a soup that is an oriented 2-manifold mesh but for
 /// points at the same position (a seam, or a soup of separate polygons).
@@ -78,38 +117,25 @@ inline const char* const coinciding_points = "two vertices are at the same posit
 template <class PointRange, class PolygonRange>
 std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
 {
-  // corners, numbered polygon by polygon: their point and the next corner
-  std::vector<std::size_t> point_of, next_of;
   std::vector<std::size_t> last_polygon(points.size(), std::size_t(-1)); // the last polygon using a point
   for(std::size_t f = 0; f < polygons.size(); ++f) {
     if(polygons[f].size() < 3)
       return "a face has fewer than 3 corners";
-    const std::size_t first = point_of.size();
     for(std::size_t v : polygons[f]) {
       if(last_polygon[v] == f)
         return "a face passes twice through the same vertex";
       last_polygon[v] = f;
-      next_of.push_back(point_of.size() + 1);
-      point_of.push_back(v);
     }
-    next_of.back() = first;
   }
   if(std::find(last_polygon.begin(), last_polygon.end(), std::size_t(-1)) != last_polygon.end())
     return "a vertex is used by no face";
 
-  // Sorted by their points, the edges of the polygons come in groups: one polygon
-  // (a border edge) or two going opposite ways (an inner edge). Across an inner
-  // edge a->b / b->a, the corners at a are neighbours around a, and those at b
-  // around b; a manifold vertex has all its corners in one such fan.
-  if(point_of.size() >= (std::size_t(1) << 32))
-    throw Remeshing_error("the input has more than 2^32 face corners");
-  std::vector<Polygon_edge> edges;
-  edges.reserve(point_of.size());
-  for(std::size_t c = 0; c < point_of.size(); ++c) {
-    const std::uint64_t from = point_of[c], to = point_of[next_of[c]];
-    edges.push_back({((std::min)(from, to) << 32) | (std::max)(from, to), std::uint32_t(c), from < to});
-  }
-  std::sort(edges.begin(), edges.end());
+  // Across an inner edge a->b / b->a, the corners at a are neighbours around a, and
+  // those at b around b; a manifold vertex has all its corners in one such fan.
+  const Soup_corners corners(polygons);
+  const std::vector<Polygon_edge> edges = sorted_polygon_edges(corners);
+  const auto& point_of = corners.point_of;
+  const auto& next_of = corners.next_of;
   Corner_sets fans(point_of.size());
   for(std::size_t i = 0; i < edges.size();) {
     std::size_t j = i + 1;
