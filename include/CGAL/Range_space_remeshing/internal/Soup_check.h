@@ -11,6 +11,7 @@
 #define CGAL_RANGE_SPACE_REMESHING_INTERNAL_SOUP_CHECK_H
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/internal/Union_find.h>
 
 #include <algorithm>
 #include <cmath>
@@ -40,23 +41,6 @@ void check_soup_values(const PointRange& points, const PolygonRange& polygons)
     if(!std::isfinite(double(p.x())) || !std::isfinite(double(p.y())) || !std::isfinite(double(p.z())))
       throw Remeshing_error("the input has a NaN or infinite vertex coordinate");
 }
-
-/// Union-find over the corners of the soup.
-class Corner_sets
-{
-public:
-  explicit Corner_sets(std::size_t n) : parent_(n) { std::iota(parent_.begin(), parent_.end(), std::size_t(0)); }
-  std::size_t find(std::size_t c)
-  {
-    while(parent_[c] != c)
-      c = parent_[c] = parent_[parent_[c]];
-    return c;
-  }
-  void unite(std::size_t a, std::size_t b) { parent_[find(a)] = find(b); }
-
-private:
-  std::vector<std::size_t> parent_;
-};
 
 /// The corners of a soup, numbered polygon by polygon: the point at each, and the
 /// next corner of its polygon.
@@ -136,7 +120,9 @@ std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
   const std::vector<Polygon_edge> edges = sorted_polygon_edges(corners);
   const auto& point_of = corners.point_of;
   const auto& next_of = corners.next_of;
-  Corner_sets fans(point_of.size());
+  std::vector<std::size_t> fans(point_of.size()); // union-find forest of the corners
+  std::iota(fans.begin(), fans.end(), std::size_t(0));
+  auto unite = [&fans](std::size_t a, std::size_t b) { fans[union_find_root(fans, a)] = union_find_root(fans, b); };
   for(std::size_t i = 0; i < edges.size();) {
     std::size_t j = i + 1;
     while(j < edges.size() && edges[j].key == edges[i].key)
@@ -147,14 +133,14 @@ std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
       if(edges[i].forward == edges[i + 1].forward)
         return "two faces sharing an edge have opposite orientations";
       const std::size_t c1 = edges[i].corner, c2 = edges[i + 1].corner;
-      fans.unite(c1, next_of[c2]);
-      fans.unite(c2, next_of[c1]);
+      unite(c1, next_of[c2]);
+      unite(c2, next_of[c1]);
     }
     i = j;
   }
   std::vector<std::size_t> fan_of(points.size(), std::size_t(-1));
   for(std::size_t c = 0; c < point_of.size(); ++c) {
-    const std::size_t fan = fans.find(c);
+    const std::size_t fan = union_find_root(fans, c);
     std::size_t& seen = fan_of[point_of[c]];
     if(seen == std::size_t(-1))
       seen = fan;
