@@ -1,4 +1,5 @@
 // quality [--json] MESH...
+// quality [--json] --measure INPUT REMESH   (the same measures of a remesh made elsewhere)
 //
 // The measuring instrument of issue 39 (output quality): for each mesh and map
 // (identity, position + normal), the command-line program's default pipeline (dual
@@ -55,15 +56,15 @@ namespace {
 // ---------------------------------------------------------------------------------
 // Corner quality: the one formula every quad is judged by
 
-/// The quad's unit vector-area normal: (1/2) sum of p_i x p_(i+1), normalised; the
-/// zero vector when the vector area vanishes (a symmetric bow-tie, a flat quad).
+/// The quad's unit vector-area normal: the vector area of a quadrilateral, (1/2) sum of
+/// p_i x p_(i+1), is (1/2) (p2 - p0) x (p3 - p1), here normalised (the difference form
+/// does not lose digits to the distance from the origin); the zero vector when the
+/// vector area vanishes (a symmetric bow-tie, a quad flat as a segment).
 Vector unit_vector_area_normal(const std::array<Point, 4>& quad)
 {
-  Vector sum = CGAL::NULL_VECTOR;
-  for(int i = 0; i < 4; ++i)
-    sum = sum + CGAL::cross_product(quad[i] - CGAL::ORIGIN, quad[(i + 1) % 4] - CGAL::ORIGIN);
-  const double length = std::sqrt(sum.squared_length());
-  return length > 0 ? sum / length : CGAL::NULL_VECTOR;
+  const Vector area = CGAL::cross_product(quad[2] - quad[0], quad[3] - quad[1]);
+  const double length = std::sqrt(area.squared_length());
+  return length > 0 ? area / length : CGAL::NULL_VECTOR;
 }
 
 /// (e_next x e_prev) . n / (|e_next| |e_prev|) at corner i: the sine of the corner's
@@ -86,22 +87,33 @@ double min_corner_quality(const std::array<Point, 4>& quad)
 
 bool is_folded_or_non_convex(const std::array<Point, 4>& quad) { return min_corner_quality(quad) <= 0; }
 
-/// The classifier on quads whose answer is known; the program must not measure with a
+/// The score of a square and a 60° rhombus, and the classifier on quads whose answer
+/// is known, each also tilted out of the xy plane
+/// and with its corners in the opposite order (its normal then points down): the normal
+/// must come from the quad, not from an axis. The program must not measure with a
 /// broken instrument, so a wrong answer aborts it.
 void check_classifier_on_hand_made_quads()
 {
   const std::array<Point, 4> convex{{{0, 0, 0}, {2, 0, 0}, {2.5, 1, 0}, {0, 1.5, 0}}};
   const std::array<Point, 4> dart{{{0, 0, 0}, {2, 0, 0}, {0.5, 0.5, 0}, {0, 2, 0}}}; // reflex at (0.5, 0.5)
   const std::array<Point, 4> bow_tie{{{0, 0, 0}, {3, 0, 0}, {0, 1, 0}, {1, 1, 0}}};  // edges 1-2 and 3-0 cross
-  // the same quads tilted out of the xy plane: the normal must come from the quad
   const auto tilted = [](std::array<Point, 4> q) {
     for(Point& p : q)
       p = Point(p.x(), 0.6 * p.y() - 0.8 * p.z(), 0.8 * p.y() + 0.6 * p.z());
     return q;
   };
-  const bool right = !is_folded_or_non_convex(convex) && is_folded_or_non_convex(dart) &&
-                     is_folded_or_non_convex(bow_tie) && !is_folded_or_non_convex(tilted(convex)) &&
-                     is_folded_or_non_convex(tilted(dart)) && is_folded_or_non_convex(tilted(bow_tie));
+  const auto reversed = [](std::array<Point, 4> q) {
+    std::reverse(q.begin(), q.end());
+    return q;
+  };
+  // the score itself: the sine of the smallest corner angle, 1 on a square
+  const std::array<Point, 4> square{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}};
+  const std::array<Point, 4> rhombus_60{{{0, 0, 0}, {2, 0, 0}, {3, std::sqrt(3.), 0}, {1, std::sqrt(3.), 0}}}; // side 2
+  bool right = std::abs(min_corner_quality(square) - 1) < 1e-12 &&
+               std::abs(min_corner_quality(tilted(rhombus_60)) - std::sqrt(0.75)) < 1e-12;
+  for(const auto& [quad, bad] : {std::pair(convex, false), std::pair(dart, true), std::pair(bow_tie, true)})
+    for(const auto& seen : {quad, tilted(quad), reversed(quad), reversed(tilted(quad))})
+      right = right && is_folded_or_non_convex(seen) == bad;
   if(!right) {
     std::cerr << "quality: the corner-quality check misclassifies a hand-made quad" << std::endl;
     std::abort();
@@ -301,6 +313,13 @@ void remesh_with_map(const Model& model, const std::string& map, std::size_t tar
   RSR::remesh(model.mesh, output, program_parameters(model, target).range_map(f));
 }
 
+void measure_output(const Mesh& output, Run& r)
+{
+  r.output_vertices = num_vertices(output);
+  r.shape = shape_of(output);
+  r.output_topology = topology_of(output);
+}
+
 Run measure_run(const Model& model, const std::string& map)
 {
   Run r;
@@ -317,9 +336,24 @@ Run measure_run(const Model& model, const std::string& map)
     r.error = e.what();
   }
   r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  r.output_vertices = num_vertices(output);
-  r.shape = shape_of(output);
-  r.output_topology = topology_of(output);
+  measure_output(output, r);
+  return r;
+}
+
+/// A remesh made elsewhere (the program's output file, a later version's): the same
+/// measures, without a target or a time.
+Run measure_file(const Model& model, const std::string& file)
+{
+  Run r;
+  r.model = model.name;
+  r.map = "file " + benchmark_support::model_name(file);
+  r.input_vertices = num_vertices(model.mesh);
+  r.input_topology = model.topology;
+  r.ms = NAN;
+  Mesh output;
+  if(!CGAL::IO::read_polygon_mesh(file, output))
+    r.error = "cannot read '" + file + "'";
+  measure_output(output, r);
   return r;
 }
 
@@ -348,13 +382,15 @@ void print_markdown_header()
 void print_markdown_row(const Run& r)
 {
   const Shape& s = r.shape;
-  std::cout << "| " << r.model << " | " << r.map << " | " << r.input_vertices << " | " << r.target << " | ";
+  std::cout << "| " << r.model << " | " << r.map << " | " << r.input_vertices << " | "
+            << (r.target > 0 ? std::to_string(r.target) : "–") << " | ";
   if(!r.error.empty()) {
     std::cout << "no output: " << r.error << " | | | | | | | " << describe(r.input_topology) << " | | "
               << fixed(r.ms, 0) << " |\n";
     return;
   }
-  std::cout << r.output_vertices << " (" << fixed(percent(r.output_vertices, r.target) - 100, 1) << " %) | "
+  std::cout << r.output_vertices
+            << (r.target > 0 ? " (" + fixed(percent(r.output_vertices, r.target) - 100, 1) + " %)" : "") << " | "
             << fixed(percent(s.interior_valence_4, s.interior_vertices), 1) << " % | "
             << (s.border_vertices > 0 ? fixed(percent(s.border_valence_3, s.border_vertices), 1) + " %" : "–")
             << " | " << s.bad_quads << " (" << fixed(percent(s.bad_quads, s.quads), 2) << " %) | "
@@ -400,7 +436,7 @@ void print_json_run(const Run& r, bool last)
             << ", \"input_topology\": " << json_topology(r.input_topology)
             << ", \"output_topology\": " << json_topology(r.output_topology)
             << ", \"topology_kept\": " << (r.input_topology == r.output_topology ? "true" : "false")
-            << ", \"ms\": " << fixed(r.ms, 1) << "}" << (last ? "\n" : ",\n");
+            << ", \"ms\": " << json_number(r.ms) << "}" << (last ? "\n" : ",\n");
 }
 
 bool read_model(const std::string& file, Model& model)
@@ -413,45 +449,67 @@ bool read_model(const std::string& file, Model& model)
   return true;
 }
 
+constexpr const char* usage = "usage: quality [--json] MESH...\n"
+                              "       quality [--json] --measure INPUT REMESH   (a remesh made elsewhere)";
+
+/// The runs of the default table: both maps on every mesh.
+bool measure_meshes(const std::vector<std::string>& files, std::vector<Run>& runs)
+{
+  for(const std::string& file : files) {
+    Model model;
+    if(!read_model(file, model))
+      return false;
+    for(const char* map : {"identity", "position-normal"})
+      runs.push_back(measure_run(model, map));
+  }
+  return true;
+}
+
+void print_runs(const std::vector<Run>& runs, bool json)
+{
+  if(json) {
+    std::cout << "[\n";
+    for(std::size_t i = 0; i < runs.size(); ++i)
+      print_json_run(runs[i], i + 1 == runs.size());
+    std::cout << "]\n";
+    return;
+  }
+  print_markdown_header();
+  for(const Run& r : runs)
+    print_markdown_row(r);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
   check_classifier_on_hand_made_quads();
-  bool json = false;
+  bool json = false, measure = false;
   std::vector<std::string> files;
   for(int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if(arg == "--json")
       json = true;
+    else if(arg == "--measure")
+      measure = true;
     else if(!arg.empty() && arg[0] == '-') {
-      std::cerr << "quality: unknown option '" << arg << "'\nusage: quality [--json] MESH..." << std::endl;
+      std::cerr << "quality: unknown option '" << arg << "'\n" << usage << std::endl;
       return 2;
     } else
       files.push_back(arg);
   }
-  if(files.empty()) {
-    std::cerr << "usage: quality [--json] MESH..." << std::endl;
+  if(files.empty() || (measure && files.size() != 2)) {
+    std::cerr << usage << std::endl;
     return 2;
   }
-  if(json)
-    std::cout << "[\n";
-  else
-    print_markdown_header();
-  for(std::size_t i = 0; i < files.size(); ++i) {
+  std::vector<Run> runs;
+  if(measure) {
     Model model;
-    if(!read_model(files[i], model))
+    if(!read_model(files[0], model))
       return 2;
-    for(const char* map : {"identity", "position-normal"}) {
-      const Run r = measure_run(model, map);
-      if(json)
-        print_json_run(r, i + 1 == files.size() && std::string(map) == "position-normal");
-      else
-        print_markdown_row(r);
-      std::cout.flush();
-    }
-  }
-  if(json)
-    std::cout << "]\n";
+    runs.push_back(measure_file(model, files[1]));
+  } else if(!measure_meshes(files, runs))
+    return 2;
+  print_runs(runs, json);
   return 0;
 }
