@@ -22,8 +22,8 @@
 //
 // Everything is computed here from the output mesh's connectivity and points, none
 // of it from the library's statistics: the numbers must judge the library, not repeat
-// it. Markdown on stdout (with --json, one JSON object instead); deterministic but for
-// the time column.
+// it. Markdown on stdout (with --json, a JSON array of one object a run instead);
+// deterministic but for the time column.
 
 #include <CGAL/Range_space_remeshing/Lazy_vertex_normal_map.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
