@@ -13,15 +13,18 @@
 #include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <iostream>
 #include <limits>
 #include <numeric>
 #include <random>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -84,6 +87,23 @@ inline double memory_latency_ns()
   volatile std::uint32_t keep = at; // the chase must not be optimised away
   (void)keep;
   return ns / double(loads);
+}
+
+/// Reads `file` into the empty `m`; says why on std::cerr, after `program`'s name, if it
+/// is not a non-empty triangle mesh.
+inline bool read_triangle_mesh(const std::string& file, Mesh& m, const char* program)
+{
+  if(CGAL::IO::read_polygon_mesh(file, m) && num_faces(m) > 0 && CGAL::is_triangle_mesh(m))
+    return true;
+  std::cerr << program << ": cannot read '" << file << "' as a triangle mesh" << std::endl;
+  return false;
+}
+
+/// The file's name without its folder and extension: the model's name in the tables.
+inline std::string model_name(const std::string& file)
+{
+  const std::string name = file.substr(file.find_last_of('/') + 1);
+  return name.substr(0, name.find_last_of('.'));
 }
 
 inline double bbox_diagonal(const Mesh& m)

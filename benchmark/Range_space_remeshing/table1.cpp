@@ -636,13 +636,9 @@ void table_deforming(const Model& model)
 
 bool read_model(const std::string& file, Model& model)
 {
-  if(!CGAL::IO::read_polygon_mesh(file, model.mesh) || num_faces(model.mesh) == 0 ||
-     !CGAL::is_triangle_mesh(model.mesh)) {
-    std::cerr << "table1: cannot read '" << file << "' as a triangle mesh" << std::endl;
+  if(!read_triangle_mesh(file, model.mesh, "table1"))
     return false;
-  }
-  model.name = file.substr(file.find_last_of('/') + 1);
-  model.name = model.name.substr(0, model.name.find_last_of('.'));
+  model.name = model_name(file);
   model.diagonal = bbox_diagonal(model.mesh);
   return true;
 }
