@@ -136,23 +136,14 @@ public:
     return t;
   }
 
+  // As `u()`: the check is on every loaded face, kept small and inlined, with the
+  // recording (once per face) out of line.
   const Face_record& record(std::uint32_t face_id)
   {
     CGAL_assertion(face_id < recorded_.size());
-    Face_record& r = records_[face_id];
-    if(recorded_[face_id])
-      return r;
-    const Face_handles handles = fill_record(face_id);
-    for(int e = 0; e < 3; ++e) {
-      vertex_of_id_[r.vertex[e]] = handles.corners[e];
-      if(r.neighbour[e] == border)
-        seen_border_ = true;
-      else
-        face_of_id_[r.neighbour[e]] = handles.neighbours[e];
-    }
-    recorded_[face_id] = 1;
-    ++number_of_visited_faces_;
-    return r;
+    if(!recorded_[face_id])
+      record_first_time(face_id);
+    return records_[face_id];
   }
 
   /// The record of a face already recorded (a loaded face, or a neighbour's address to
@@ -300,6 +291,24 @@ private:
     compute_range_coordinates(id);
     mapped_[id] = 1;
     ++number_of_mapped_;
+  }
+
+#if defined(__GNUC__)
+  __attribute__((noinline))
+#endif
+  void record_first_time(std::uint32_t face_id)
+  {
+    const Face_record& r = records_[face_id];
+    const Face_handles handles = fill_record(face_id);
+    for(int e = 0; e < 3; ++e) {
+      vertex_of_id_[r.vertex[e]] = handles.corners[e];
+      if(r.neighbour[e] == border)
+        seen_border_ = true;
+      else
+        face_of_id_[r.neighbour[e]] = handles.neighbours[e];
+    }
+    recorded_[face_id] = 1;
+    ++number_of_visited_faces_;
   }
 
   /// Maps v, writing only its own entries (any thread).
