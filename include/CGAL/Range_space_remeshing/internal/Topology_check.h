@@ -30,6 +30,7 @@
 
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Topology_defect.h>
+#include <CGAL/Range_space_remeshing/internal/Closed_loops.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Union_find.h>
@@ -58,6 +59,7 @@ struct Levels_hash
 template <class Tracer, class FaceDescriptor>
 class Topology_check
 {
+  using Input = typename Tracer::Input;
   static constexpr int D = Tracer::D;
   using Levels = typename Tracer::Levels;
   using Defect = Topology_defect<FaceDescriptor>;
@@ -73,7 +75,9 @@ class Topology_check
 
 public:
   Topology_check(Tracer& tracer, const Primal_complex& complex)
-    : tracer_(tracer), complex_(complex), number_of_faces_(std::uint32_t(tracer.number_of_input_faces()))
+    : tracer_(tracer), input_(tracer.input()),
+      closed_loops_(tracer.input(), tracer.untraced_pieces(), tracer.predicates()), complex_(complex),
+      number_of_faces_(std::uint32_t(input_.number_of_input_faces()))
   {}
 
   /// Fills the topology fields of `stats` and returns the defects found.
@@ -82,7 +86,7 @@ public:
     progress_ = &progress;
     progress.report(Remeshing_stage::TOPOLOGY_CHECK, 0);
     stats.topology_checked = true;
-    tracer_.find_closed_loops(
+    closed_loops_.find(
         [&](int axis, std::int32_t level, const Levels& cell, const std::vector<std::uint32_t>& faces) {
           loops_.push_back(Loop{axis, cell, faces});
           loops_.back().cell[axis] = level;
@@ -129,13 +133,13 @@ private:
     d.kind = kind;
     d.cell.assign(cell.begin(), cell.end());
     for(std::uint32_t f : face_ids)
-      d.input_faces.push_back(tracer_.face_of_id(f));
+      d.input_faces.push_back(input_.face_of_id(f));
     return d;
   }
 
   Levels cell_of_vertex(std::uint32_t v) const
   {
-    Levels c = tracer_.ceiling_of(v);
+    Levels c = input_.ceiling_of(v);
     for(std::int32_t& x : c)
       --x; // a coordinate on a level counts as below it
     return c;
@@ -151,8 +155,8 @@ private:
     std::vector<std::uint32_t> parent(number_of_faces_);
     for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
       parent[f] = f;
-      for(std::uint32_t n : tracer_.neighbours_of(f))
-        if(n != Tracer::no_neighbour && n < f)
+      for(std::uint32_t n : input_.neighbours_of(f))
+        if(n != Input::border && n < f)
           unite(parent, f, n);
     }
     struct Counts
@@ -162,7 +166,7 @@ private:
     };
     std::vector<Counts> counts;
     component_.assign(number_of_faces_, none);
-    std::vector<std::uint32_t> vertex_owner(tracer_.number_of_input_vertices(), 0); // 1 + component
+    std::vector<std::uint32_t> vertex_owner(input_.number_of_input_vertices(), 0); // 1 + component
     for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
       std::uint32_t& c = component_[union_find_root(parent, f)];
       if(c == none) {
@@ -174,12 +178,12 @@ private:
       ++k.faces;
       k.half_edges += 3;
       for(int e = 0; e < 3; ++e) {
-        const std::uint32_t v = tracer_.corners_of(f)[e];
+        const std::uint32_t v = input_.corners_of(f)[e];
         if(vertex_owner[v] != c + 1) {
           vertex_owner[v] = c + 1;
           ++k.vertices;
         }
-        k.border_edges += tracer_.neighbours_of(f)[e] == Tracer::no_neighbour ? 1 : 0;
+        k.border_edges += input_.neighbours_of(f)[e] == Input::border ? 1 : 0;
       }
     }
     for(const auto& v : tracer_.intersection_vertices())
@@ -218,11 +222,11 @@ private:
         continue;
       if(defect_of[c] == std::size_t(-1)) {
         defect_of[c] = defects_.size();
-        add_defect(Topology_defect_kind::LOST_COMPONENT, cell_of_vertex(tracer_.corners_of(f)[0]),
+        add_defect(Topology_defect_kind::LOST_COMPONENT, cell_of_vertex(input_.corners_of(f)[0]),
                    std::vector<std::uint32_t>());
         ++stats.lost_components;
       }
-      defects_[defect_of[c]].input_faces.push_back(tracer_.face_of_id(f));
+      defects_[defect_of[c]].input_faces.push_back(input_.face_of_id(f));
     }
   }
 
@@ -237,9 +241,9 @@ private:
     std::vector<std::uint32_t> faces;
     for(std::uint32_t f = 0; f < number_of_faces_; ++f)
       for(int e = 0; e < 3; ++e) {
-        if(tracer_.neighbours_of(f)[e] != Tracer::no_neighbour || walked[3 * f + e] || is_lost(f))
+        if(input_.neighbours_of(f)[e] != Input::border || walked[3 * f + e] || is_lost(f))
           continue;
-        const Levels& ceiling = tracer_.ceiling_of(tracer_.corners_of(f)[e]);
+        const Levels& ceiling = input_.ceiling_of(input_.corners_of(f)[e]);
         bool one_cell = true;
         faces.clear();
         std::uint32_t g = f;
@@ -247,11 +251,11 @@ private:
         do {
           walked[3 * g + edge] = 1;
           faces.push_back(g);
-          one_cell = one_cell && tracer_.ceiling_of(tracer_.corners_of(g)[edge]) == ceiling;
+          one_cell = one_cell && input_.ceiling_of(input_.corners_of(g)[edge]) == ceiling;
           next_border_edge(g, edge);
         } while(g != f || edge != e);
         if(one_cell)
-          add_defect(Topology_defect_kind::LOST_BORDER_CYCLE, cell_of_vertex(tracer_.corners_of(f)[e]), faces);
+          add_defect(Topology_defect_kind::LOST_BORDER_CYCLE, cell_of_vertex(input_.corners_of(f)[e]), faces);
       }
   }
 
@@ -259,14 +263,14 @@ private:
   /// around the vertex that ends it.
   void next_border_edge(std::uint32_t& f, int& e) const
   {
-    const std::uint32_t pivot = tracer_.corners_of(f)[(e + 1) % 3];
+    const std::uint32_t pivot = input_.corners_of(f)[(e + 1) % 3];
     for(std::uint32_t steps = 0; steps <= number_of_faces_; ++steps) {
       e = (e + 1) % 3; // the face's edge leaving the pivot
-      const std::uint32_t n = tracer_.neighbours_of(f)[e];
-      if(n == Tracer::no_neighbour)
+      const std::uint32_t n = input_.neighbours_of(f)[e];
+      if(n == Input::border)
         return;
       f = n;
-      const auto& corners = tracer_.corners_of(f);
+      const auto& corners = input_.corners_of(f);
       e = int(std::find(corners.begin(), corners.end(), pivot) - corners.begin());
       e = (e + 2) % 3; // the edge entering the pivot, shared with the previous face
     }
@@ -300,10 +304,10 @@ private:
   /// long lists may hold repeats until the caller runs `remove_repeats()`.
   void add_crossing_cells(std::uint32_t a, std::uint32_t b, std::vector<Levels>& cells) const
   {
-    const Levels &ca = tracer_.ceiling_of(a), &cb = tracer_.ceiling_of(b);
+    const Levels &ca = input_.ceiling_of(a), &cb = input_.ceiling_of(b);
     for(int P = 0; P < D; ++P)
       for(std::int32_t level = (std::min)(ca[P], cb[P]); level < (std::max)(ca[P], cb[P]); ++level) {
-        Levels c = tracer_.cell_of_edge_crossing(a, b, P, level);
+        Levels c = closed_loops_.cell_of_edge_crossing(a, b, P, level);
         add_once(cells, c);
         --c[P];
         add_once(cells, c);
@@ -324,7 +328,7 @@ private:
   void cells_of_face(std::uint32_t f, std::vector<Levels>& cells) const
   {
     cells.clear();
-    const auto& corners = tracer_.corners_of(f);
+    const auto& corners = input_.corners_of(f);
     for(int e = 0; e < 3; ++e)
       add_once(cells, cell_of_vertex(corners[e]));
     for(int e = 0; e < 3; ++e)
@@ -348,8 +352,8 @@ private:
   Levels cell_ahead(const Vertex& v) const
   {
     Levels c = v.cell;
-    const std::uint32_t end = tracer_.corners_of(v.face_id)[(v.border_edge + 1) % 3];
-    c[v.i] = v.k() - (tracer_.ceiling_of(end)[v.i] > v.k() ? 0 : 1);
+    const std::uint32_t end = input_.corners_of(v.face_id)[(v.border_edge + 1) % 3];
+    c[v.i] = v.k() - (input_.ceiling_of(end)[v.i] > v.k() ? 0 : 1);
     return c;
   }
 
@@ -414,7 +418,7 @@ private:
     index_vertices_by_face();
     Cell_map excess;
     std::vector<Levels> cells;
-    std::vector<std::uint8_t> vertex_counted(tracer_.number_of_input_vertices(), 0);
+    std::vector<std::uint8_t> vertex_counted(input_.number_of_input_vertices(), 0);
     Work_meter meter(*progress_, Remeshing_stage::TOPOLOGY_CHECK);
     for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
       if(is_lost(f))
@@ -423,10 +427,10 @@ private:
       meter.add(1 + cells.size(), [&] { return 0.2 + 0.5 * f / number_of_faces_; });
       for(const Levels& c : cells)
         ++excess[c];
-      const auto& corners = tracer_.corners_of(f);
+      const auto& corners = input_.corners_of(f);
       for(int e = 0; e < 3; ++e) {
-        const std::uint32_t n = tracer_.neighbours_of(f)[e];
-        if(n != Tracer::no_neighbour && n < f)
+        const std::uint32_t n = input_.neighbours_of(f)[e];
+        if(n != Input::border && n < f)
           continue; // each edge once
         cells_of_edge(corners[e], corners[(e + 1) % 3], cells);
         for(const Levels& c : cells)
@@ -469,7 +473,7 @@ private:
       }
     }
     std::vector<std::uint8_t> in_region(number_of_faces_, 0);
-    std::vector<std::uint8_t> vertex_counted(tracer_.number_of_input_vertices(), 0);
+    std::vector<std::uint8_t> vertex_counted(input_.number_of_input_vertices(), 0);
     std::vector<Levels> cells;
     for(auto& entry : seeds) {
       const Levels& c = entry.first;
@@ -489,15 +493,15 @@ private:
         stack.pop_back();
         region.push_back(f);
         ++excess[c];
-        const auto& corners = tracer_.corners_of(f);
+        const auto& corners = input_.corners_of(f);
         for(int e = 0; e < 3; ++e) {
           cells_of_edge(corners[e], corners[(e + 1) % 3], cells);
           if(std::find(cells.begin(), cells.end(), c) == cells.end())
             continue;
-          const std::uint32_t n = tracer_.neighbours_of(f)[e];
-          if(n == Tracer::no_neighbour || n > f) // each edge once (both its faces meet c)
+          const std::uint32_t n = input_.neighbours_of(f)[e];
+          if(n == Input::border || n > f) // each edge once (both its faces meet c)
             --excess[c];
-          if(n != Tracer::no_neighbour && !in_region[n]) {
+          if(n != Input::border && !in_region[n]) {
             in_region[n] = 1;
             stack.push_back(n);
           }
@@ -577,7 +581,7 @@ private:
       for(const Levels& c : cells) {
         const auto found = defect_of_cell.find(c);
         if(found != defect_of_cell.end())
-          defects_[found->second].input_faces.push_back(tracer_.face_of_id(f));
+          defects_[found->second].input_faces.push_back(input_.face_of_id(f));
       }
     }
     return defect_of_cell.size();
@@ -585,6 +589,8 @@ private:
 
   const Progress* progress_ = &Progress::none();
   Tracer& tracer_;
+  Input& input_;
+  Closed_loops<Input> closed_loops_;
   const Primal_complex& complex_;
   std::uint32_t number_of_faces_;
   std::vector<std::uint32_t> component_;     // by face id
