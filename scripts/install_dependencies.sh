@@ -3,7 +3,7 @@
 # Usage: scripts/install_dependencies.sh [extra packages...]
 set -euo pipefail
 
-packages=(cmake make g++ ccache libcgal-dev libcgal-demo libboost-dev libgmp-dev libmpfr-dev libtbb-dev nlohmann-json3-dev "$@")
+packages=(cmake make g++ ccache libcgal-dev libcgal-demo libboost-dev libgmp-dev libmpfr-dev libtbb-dev nlohmann-json3-dev strace "$@")
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")

@@ -32,6 +32,8 @@
 
 #include <ext/stdio_filebuf.h> // an ostream on the file descriptor mkstemp gives
 #include <fcntl.h>
+#include <pthread.h>
+#include <signal.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
@@ -71,15 +73,45 @@ inline bool has_pending_files()
   return false;
 }
 
-extern "C" inline void remove_pending_files_and_die(int signal_number)
+/// Removes the temporary files not yet renamed (async-signal-safe).
+inline void remove_pending_files()
 {
   Pending_files& files = pending_files();
   for(int i = 0; i < Pending_files::capacity; ++i)
-    if(files.used[i])
-      ::unlink(files.paths[i]); // async-signal-safe
+    if(files.used[i]) {
+      ::unlink(files.paths[i]);
+      files.used[i] = 0;
+    }
+}
+
+extern "C" inline void remove_pending_files_and_die(int signal_number)
+{
+  remove_pending_files();
   std::signal(signal_number, SIG_DFL);
   std::raise(signal_number);
 }
+
+/// Holds SIGINT, SIGTERM and SIGHUP for its lifetime: a signal that arrives meanwhile
+/// is handled after, so that a temporary file is never created unregistered and a set
+/// of files is renamed all or none.
+class Signals_held
+{
+public:
+  Signals_held()
+  {
+    sigset_t held;
+    sigemptyset(&held);
+    for(int s : {SIGINT, SIGTERM, SIGHUP})
+      sigaddset(&held, s);
+    ::pthread_sigmask(SIG_BLOCK, &held, &before_); // the thread that writes (the program has one)
+  }
+  Signals_held(const Signals_held&) = delete;
+  Signals_held& operator=(const Signals_held&) = delete;
+  ~Signals_held() { ::pthread_sigmask(SIG_SETMASK, &before_, nullptr); }
+
+private:
+  sigset_t before_;
+};
 
 /// The permissions a new file gets from this process' umask (mkstemp gives 0600).
 inline mode_t new_file_mode()
@@ -221,12 +253,17 @@ public:
       throw Write_error("cannot write '" + path + "': path too long");
     std::vector<char> name(temporary.begin(), temporary.end());
     name.push_back('\0');
-    const int fd = ::mkstemp(name.data()); // O_CREAT | O_EXCL: never an existing file or link
-    if(fd < 0)
-      throw Write_error("cannot write '" + path + "': " + std::strerror(errno));
-    std::memcpy(pending.paths[slot], name.data(), name.size());
-    pending.used[slot] = 1;
-    files_.push_back({std::string(name.data()), path, slot});
+    files_.reserve(files_.size() + 1);
+    int fd;
+    {
+      internal::Signals_held held; // created and registered at once
+      fd = ::mkstemp(name.data()); // O_CREAT | O_EXCL: never an existing file or link
+      if(fd < 0)
+        throw Write_error("cannot write '" + path + "': " + std::strerror(errno));
+      std::memcpy(pending.paths[slot], name.data(), name.size());
+      pending.used[slot] = 1;
+      files_.push_back({std::string(name.data()), path, slot});
+    }
     ::fchmod(fd, internal::new_file_mode());
     bool ok = false;
     {
@@ -243,9 +280,10 @@ public:
       throw Write_error("cannot write '" + path + "' (disk full or not writable?)");
   }
 
-  /// Renames every file into place.
+  /// Renames every file into place; a signal meanwhile is handled after the renames.
   void commit()
   {
+    internal::Signals_held held;
     for(File& f : files_) {
       if(std::rename(f.temporary.c_str(), f.destination.c_str()) != 0)
         throw Write_error("cannot write '" + f.destination + "': " + std::strerror(errno));

@@ -195,16 +195,35 @@ struct Options
   class Progress_line* progress = nullptr; // set by main()
 };
 
-/// Set by Ctrl-C (SIGINT) while the remesh runs: the progress visitor then cancels it.
+/// Set by Ctrl-C (SIGINT): the progress visitor then cancels the remesh, and the
+/// program checks it again after the remesh and before the files are renamed.
 volatile std::sig_atomic_t interrupted = 0;
 
-extern "C" void cancel_on_interrupt(int signal_number)
+/// What an interrupted run says on stderr, whenever Ctrl-C came.
+constexpr char interrupted_line[] = "range_space_remesh: interrupted: nothing was written\n";
+constexpr int interrupted_status = 130; // 128 + SIGINT, as the shells report it
+
+extern "C" void cancel_on_interrupt(int)
 {
-  // while files are written (or at a second Ctrl-C), the writer's handler removes the
-  // temporary files and dies of the signal
-  if(rsr_io::internal::has_pending_files() || interrupted)
-    rsr_io::internal::remove_pending_files_and_die(signal_number);
+  // while files are written (or at a second Ctrl-C, as when the reading takes long),
+  // stop here: remove the temporary files, say so, exit; all async-signal-safe
+  if(rsr_io::internal::has_pending_files() || interrupted) {
+    rsr_io::internal::remove_pending_files();
+    const ssize_t written = ::write(STDERR_FILENO, interrupted_line, sizeof interrupted_line - 1);
+    static_cast<void>(written);
+    ::_exit(interrupted_status);
+  }
   interrupted = 1;
+}
+
+/// Thrown where the program checks for a Ctrl-C the remesh did not see.
+struct Interrupted
+{};
+
+void stop_if_interrupted()
+{
+  if(interrupted)
+    throw Interrupted();
 }
 
 /// The program's progress visitor: a progress line on stderr when it is a terminal
@@ -987,6 +1006,7 @@ int main(int argc, char** argv)
       fail(message.str());
     }
     progress.clear();
+    stop_if_interrupted(); // after the remesh's last report
     if(options.target_vertices > 0) // the size found
       h = stats.primal.cell_size;
     if(num_faces(output) == 0)
@@ -1011,6 +1031,7 @@ int main(int argc, char** argv)
       if(!options.topology_report.empty())
         files.add(flagged_faces(input, defects), options.topology_report, static_cast<const Color_map*>(nullptr),
                   write_options);
+      stop_if_interrupted(); // a Ctrl-C during the renames comes too late: the files are written
       files.commit();
     } catch(const rsr_io::Write_error& e) {
       fail(e.what());
@@ -1023,10 +1044,13 @@ int main(int argc, char** argv)
     return EXIT_SUCCESS;
   } catch(const Failure& f) {
     std::cerr << "range_space_remesh: " << f.message << std::endl;
+  } catch(const Interrupted&) {
+    std::cerr << interrupted_line << std::flush;
+    return interrupted_status;
   } catch(const RSR::Remeshing_error& e) {
     if(e.kind() == RSR::Remeshing_error::Kind::CANCELLED) {
-      std::cerr << "range_space_remesh: interrupted: nothing was written" << std::endl;
-      return 130;
+      std::cerr << interrupted_line << std::flush;
+      return interrupted_status;
     }
     const bool capped = e.kind() == RSR::Remeshing_error::Kind::OUTPUT_TOO_LARGE;
     std::cerr << "range_space_remesh: " << e.what()
