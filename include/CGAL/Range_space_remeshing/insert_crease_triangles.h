@@ -9,9 +9,9 @@
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
 #include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
+#include <CGAL/Range_space_remeshing/internal/Soup_to_mesh.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -178,7 +178,9 @@ Crease_statistics insert_crease_triangles(const TriangleMesh& tm, TriangleMesh& 
   std::vector<Point> out_points;
   for(const Vec3& p : points)
     out_points.emplace_back(p[0], p[1], p[2]);
-  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(out_points, polygons, out);
+  // the package's builder, not CGAL's polygon_soup_to_polygon_mesh(), which looks each
+  // new edge up around its vertex: k^2 steps at a vertex of valence k
+  internal::soup_to_mesh(out_points, polygons, out);
   std::vector<halfedge_descriptor> holes;
   for(auto h : halfedges(out))
     if(is_border(h, out))
