@@ -640,8 +640,15 @@ if(NOT STRACE OR NOT strace_works EQUAL 0)
   message(SEND_ERROR "strace is needed, and allowed to trace, for the checks of Ctrl-C at set moments")
   math(EXPR failures "${failures} + 1")
 else()
+  # LeakSanitizer cannot run under ptrace: off for these runs of the sanitizer build
+  set(asan_options "$ENV{ASAN_OPTIONS}")
+  if(asan_options)
+    string(APPEND asan_options ":")
+  endif()
+  string(APPEND asan_options "detect_leaks=0")
   function(interrupt_at moment expected_code)
-    execute_process(COMMAND ${STRACE} -f -qq -o /dev/null ${ARGN} ${CLI} ${elephant} at_${moment}.off
+    execute_process(COMMAND ${CMAKE_COMMAND} -E env "ASAN_OPTIONS=${asan_options}"
+                            ${STRACE} -f -qq -o /dev/null ${ARGN} ${CLI} ${elephant} at_${moment}.off
                     RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err WORKING_DIRECTORY ${WORK_DIR})
     file(GLOB leftovers ${WORK_DIR}/.rsr-*)
     if(expected_code EQUAL 0)
