@@ -225,6 +225,11 @@ foreach(line IN LISTS lines)
   math(EXPR index "${index} + 1")
 endforeach()
 file(WRITE ${WORK_DIR}/colored.off "${coff}")
+# coordinates near 1e200, finite, whose squares are not: a pyramid on a quadrilateral
+# (the split of the quadrilateral compared squared diagonals: SIGFPE in GMP)
+file(WRITE ${WORK_DIR}/huge_pyramid.obj "v 0 0 0\nv 1e200 0 0\nv 1e200 1e200 0\nv 0 1e200 0\nv 0 0 1e200\n"
+                                        "f 1 2 3 4\nf 1 5 2\nf 2 5 3\nf 3 5 4\nf 4 5 1\n")
+run(0 huge_pyramid.off huge_pyramid.obj huge_pyramid.off)
 run(2 x.off --map position-normal-color ${elephant} x.off)
 run(0 c6.ply --stats --output primal --map position-normal --cell-size 0.02 colored.off c6.ply)
 string(JSON r6_vertices GET "${out}" output_vertices)

@@ -192,9 +192,9 @@ std::size_t split_polygons(const PointRange& points, PolygonRange& polygons)
     std::vector<std::vector<std::size_t>> triangles;
     if(n == 4) {
       const auto& p = polygon;
-      const bool first_diagonal = CGAL::compare_squared_distance(points[p[0]], points[p[2]],
-                                                                 CGAL::squared_distance(points[p[1]], points[p[3]])) !=
-                                  CGAL::LARGER;
+      // both lengths compared exactly: a squared length computed apart can overflow
+      const bool first_diagonal =
+          CGAL::compare_distance(points[p[0]], points[p[2]], points[p[1]], points[p[3]]) != CGAL::LARGER;
       if(first_diagonal)
         triangles = {{p[0], p[1], p[2]}, {p[0], p[2], p[3]}};
       else
