@@ -30,7 +30,6 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
-#include <stdexcept>
 
 namespace CGAL {
 namespace Range_space_remeshing {
@@ -47,7 +46,7 @@ int exit_edge(const Triangle& t, int P, std::int32_t level, int sigma)
   for(int e = 0; e < 3; ++e)
     if(side[e] == -sigma && side[(e + 1) % 3] == sigma)
       return e;
-  throw std::logic_error("Range_space_remeshing: arc lost its plane (internal error)");
+  CGAL_error_msg("Range_space_remeshing: arc lost its plane");
 }
 
 template <class Input>
@@ -169,7 +168,7 @@ private:
     const std::size_t maximum_steps = num_faces(input_.mesh()) + 1;
     for(std::size_t step = 0;; ++step) {
       if(step > maximum_steps)
-        throw std::logic_error("Range_space_remeshing: endless arc (internal error)");
+        CGAL_error_msg("Range_space_remeshing: endless arc");
       ++tracing_steps_;
       pieces_.remove_arc_visit(f);
       const Triangle t = input_.load(f);
@@ -232,7 +231,7 @@ private:
     border_.crossings(t.face_id, e); // creates the edge's boundary vertices if need be
     end = vertices_.find_boundary(t.face_id, e, arc.P, arc.level);
     if(end == no_link)
-      throw std::logic_error("Range_space_remeshing: arc ends at no boundary vertex (internal error)");
+      CGAL_error_msg("Range_space_remeshing: arc ends at no boundary vertex");
     end_slot = boundary_arc_slot;
     CGAL_USE(arc); // read by the assertion only
     CGAL_assertion_code(const Vertex& ev = vertices_[end];)
@@ -259,8 +258,7 @@ private:
     } else {
       end = vertices_.find(t.face_id, i, j, k, m);
       if(end == no_link)
-        throw std::logic_error("Range_space_remeshing: arc ends at an unscanned vertex "
-                               "(internal error)");
+        CGAL_error_msg("Range_space_remeshing: arc ends at an unscanned vertex");
     }
     CGAL_assertion(predicates_.grid_edge_orientation(*t.p[0], *t.p[1], *t.p[2], i, j, double(k), double(m)) != 0);
     // The end vertex lies in the arc's box, strictly inside in every other axis.

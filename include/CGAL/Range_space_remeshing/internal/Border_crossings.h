@@ -19,12 +19,12 @@
 #include <CGAL/Range_space_remeshing/internal/Mapped_input.h>
 #include <CGAL/Range_space_remeshing/internal/Perturbed_predicates.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
 #include <cstdint>
-#include <stdexcept>
 #include <unordered_map>
 #include <vector>
 
@@ -216,7 +216,7 @@ private:
       if(!next_crossings.empty())
         return direction > 0 ? next_crossings.front() : next_crossings.back();
     }
-    throw std::logic_error("Range_space_remeshing: endless border (internal error)");
+    CGAL_error_msg("Range_space_remeshing: endless border");
   }
 
   void insert_corner_after(std::uint32_t a)

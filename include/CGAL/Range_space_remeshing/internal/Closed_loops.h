@@ -17,9 +17,10 @@
 #include <CGAL/Range_space_remeshing/internal/Perturbed_predicates.h>
 #include <CGAL/Range_space_remeshing/internal/Untraced_pieces.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <cstdint>
-#include <stdexcept>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -61,8 +62,8 @@ public:
     };
     for(std::uint32_t f = 0; f < counts_.size(); ++f) {
       if(counts_[f] < 0)
-        throw std::logic_error("Range_space_remeshing: an arc crossed a face more often than "
-                               "hyperplanes do (internal error)");
+        CGAL_error_msg("Range_space_remeshing: an arc crossed a face more often than "
+                       "hyperplanes do");
       if(counts_[f] == 0)
         continue;
       const Triangle t = input_.load(f);
@@ -124,7 +125,7 @@ private:
         return false;
       loop.push_back(f = n);
     }
-    throw std::logic_error("Range_space_remeshing: endless level curve (internal error)");
+    CGAL_error_msg("Range_space_remeshing: endless level curve");
   }
 
   Input& input_;

@@ -34,7 +34,6 @@
 #include <array>
 #include <cstdint>
 #include <deque>
-#include <stdexcept>
 #include <vector>
 
 namespace CGAL {
@@ -164,7 +163,7 @@ public:
   void link(std::uint32_t v, int slot, std::uint32_t w, int w_slot)
   {
     if(vertices_[w].link[w_slot] != no_link)
-      throw std::logic_error("Range_space_remeshing: inconsistent boundary (internal error)");
+      CGAL_error_msg("Range_space_remeshing: inconsistent boundary");
     vertices_[v].link[slot] = 4 * w + std::uint32_t(w_slot);
     vertices_[w].link[w_slot] = 4 * v + std::uint32_t(slot);
   }

@@ -35,6 +35,8 @@
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Union_find.h>
 
+#include <CGAL/assertions.h>
+
 #include <algorithm>
 #include <cstdint>
 #include <unordered_map>
@@ -274,7 +276,7 @@ private:
       e = int(std::find(corners.begin(), corners.end(), pivot) - corners.begin());
       e = (e + 2) % 3; // the edge entering the pivot, shared with the previous face
     }
-    throw std::logic_error("Range_space_remeshing: endless border (internal error)");
+    CGAL_error_msg("Range_space_remeshing: endless border");
   }
 
   // ---------------------------------------------------------- cells
