@@ -9,7 +9,7 @@
 // The repairs of the dual: parallel edges (rotated, glued around pinches, or joined
 // across) and pieces with faces that are not simple polygons (removed).
 
-#include <CGAL/Range_space_remeshing/internal/Quadric.h>
+#include <CGAL/Range_space_remeshing/internal/Vec3.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
