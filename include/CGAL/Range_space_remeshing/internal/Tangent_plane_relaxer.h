@@ -288,8 +288,8 @@ private:
     on_face_without_area_.assign(n_, 0);
     first_unit_plane_.assign(n_, 0);
     end_unit_plane_.assign(n_, 0);
-    const double infinity = std::numeric_limits<double>::infinity();
-    planes_box_.assign(n_, {{{-infinity, -infinity, -infinity}}, {{infinity, infinity, infinity}}});
+    const double unbounded = std::numeric_limits<double>::infinity();
+    planes_box_.assign(n_, {{{-unbounded, -unbounded, -unbounded}}, {{unbounded, unbounded, unbounded}}});
     std::vector<Vec3> scratch;
     std::size_t prepared = 0;
     for(vertex_descriptor v : vertices(mesh_)) {
