@@ -1,0 +1,415 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_TANGENT_PLANE_RELAXER_H
+#define CGAL_RANGE_SPACE_REMESHING_INTERNAL_TANGENT_PLANE_RELAXER_H
+
+// The body of `relax_on_tangent_planes()`: per iteration, smooth (the average of the
+// neighbours), project (back onto the vertex's tangent planes, or along the border),
+// and take back the moves that fold a face.
+
+#include <CGAL/Range_space_remeshing/Remeshing_stage.h>
+#include <CGAL/Range_space_remeshing/Tangent_planes.h>
+#include <CGAL/Range_space_remeshing/parameters.h>
+#include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
+#include <CGAL/Range_space_remeshing/internal/Polygon_kernel.h>
+#include <CGAL/Range_space_remeshing/internal/Pooled_tangent_planes_map.h>
+#include <CGAL/Range_space_remeshing/internal/Progress.h>
+#include <CGAL/Range_space_remeshing/internal/Quadric.h>
+
+#include <CGAL/Iterator_range.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+namespace internal {
+
+/// The corners of every face and the faces of every corner, by index, in flat arrays:
+/// what the fold test of the relaxation walks at every iteration.
+struct Face_corners
+{
+  std::vector<std::size_t> first, corners; // face k: corners[first[k]] .. corners[first[k + 1]]
+  std::vector<std::size_t> first_face, incident_faces; // vertex i: incident_faces[first_face[i]] .. [first_face[i + 1]]
+
+  template <class PolygonMesh, class VertexIndexMap>
+  Face_corners(const PolygonMesh& mesh, VertexIndexMap vertex_index, std::size_t number_of_vertices)
+  {
+    first.push_back(0);
+    for(auto f : faces(mesh)) {
+      for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+        corners.push_back(get(vertex_index, v));
+      first.push_back(corners.size());
+    }
+    first_face.assign(number_of_vertices + 1, 0);
+    for(std::size_t i : corners)
+      ++first_face[i + 1];
+    for(std::size_t i = 0; i < number_of_vertices; ++i)
+      first_face[i + 1] += first_face[i];
+    incident_faces.resize(corners.size());
+    std::vector<std::size_t> filled(first_face.begin(), first_face.end() - 1);
+    for(std::size_t k = 0; k + 1 < first.size(); ++k)
+      for(std::size_t c = first[k]; c < first[k + 1]; ++c)
+        incident_faces[filled[corners[c]]++] = k;
+  }
+  std::size_t size() const { return first.size() - 1; }
+};
+
+/// Whether face k, at these positions, faces against the normals of its corners
+/// (the sum of their unit normals): folded over its neighbours.
+inline bool is_folded(const Face_corners& fc, std::size_t k, const std::vector<Vec3>& position,
+                      const std::vector<Vec3>& normal)
+{
+  Vec3 area = {{0, 0, 0}}, reference = {{0, 0, 0}};
+  const std::size_t begin = fc.first[k], end = fc.first[k + 1];
+  const Vec3& origin = position[fc.corners[begin]]; // not (0, 0, 0): no cancellation far from it
+  for(std::size_t c = begin; c < end; ++c) {
+    const Vec3 a = difference(position[fc.corners[c]], origin);
+    const Vec3 b = difference(position[fc.corners[c + 1 < end ? c + 1 : begin]], origin);
+    const Vec3 ab = cross(a, b);
+    const Vec3& n = normal[fc.corners[c]];
+    for(int d = 0; d < 3; ++d) {
+      area[d] += ab[d];
+      reference[d] += n[d];
+    }
+  }
+  return dot(area, reference) < 0;
+}
+
+/// Takes back the moves of an iteration that fold a face that was not folded: the
+/// average of the neighbours can pull a vertex across a concave crease or corner,
+/// where the planes it is projected on do not hold it, and the face then spans the
+/// notch. The corners of such faces go back; the faces around them are checked again,
+/// until none is left (each round puts back at least one vertex). Faces folded before
+/// may stay folded or unfold. One test per face and iteration, and more only around
+/// the few vertices put back.
+inline void keep_faces_unfolded(const Face_corners& fc, const std::vector<Vec3>& position,
+                                const std::vector<Vec3>& normal, std::vector<Vec3>& next_position)
+{
+  auto newly_folded = [&](std::size_t k) {
+    return is_folded(fc, k, next_position, normal) && !is_folded(fc, k, position, normal);
+  };
+  std::vector<std::size_t> found, again;
+  for(std::size_t k = 0; k < fc.size(); ++k)
+    if(newly_folded(k))
+      found.push_back(k);
+  while(!found.empty()) {
+    again.clear();
+    for(std::size_t k : found)
+      for(std::size_t c = fc.first[k]; c < fc.first[k + 1]; ++c) {
+        const std::size_t i = fc.corners[c];
+        if(next_position[i] == position[i])
+          continue;
+        next_position[i] = position[i];
+        again.insert(again.end(), fc.incident_faces.begin() + fc.first_face[i],
+                     fc.incident_faces.begin() + fc.first_face[i + 1]);
+      }
+    std::sort(again.begin(), again.end());
+    again.erase(std::unique(again.begin(), again.end()), again.end());
+    found.clear();
+    for(std::size_t k : again)
+      if(newly_folded(k))
+        found.push_back(k);
+  }
+}
+
+/// Relaxes the vertices of a mesh over the surface they sample (see
+/// `relax_on_tangent_planes()`): `run()` prepares the border, the projections and the
+/// neighbours, then per iteration smooths and projects each vertex.
+template <class PolygonMesh, class NamedParameters>
+class Tangent_plane_relaxer
+{
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  template <class Tag>
+  static constexpr bool given = !CGAL::parameters::is_default_parameter<NamedParameters, Tag>::value;
+  static constexpr bool has_normals = given<CGAL::internal_np::vertex_normal_map_t>;
+  static constexpr bool has_planes = given<internal_np::vertex_tangent_planes_map_t>;
+  template <class Tag, class Default>
+  using Chosen = std::decay_t<decltype(CGAL::parameters::choose_parameter(
+      CGAL::parameters::get_parameter(std::declval<const NamedParameters&>(), Tag()), std::declval<const Default&>()))>;
+  using VPM = typename GetVertexPointMap<PolygonMesh, NamedParameters>::type;
+  using Point = typename boost::property_traits<VPM>::value_type;
+  using Vector = typename CGAL::Kernel_traits<Point>::Kernel::Vector_3;
+  using Normal_map = Chosen<CGAL::internal_np::vertex_normal_map_t, CGAL::Constant_property_map<vertex_descriptor, Vector>>;
+  using Vertex_index = decltype(CGAL::get_initialized_vertex_index_map(std::declval<PolygonMesh&>(),
+                                                                       std::declval<const NamedParameters&>()));
+  using Own_planes_map =
+      decltype(boost::make_iterator_property_map(std::declval<std::vector<Tangent_planes>::iterator>(),
+                                                 std::declval<Vertex_index>()));
+  using Planes_map = Chosen<internal_np::vertex_tangent_planes_map_t, Own_planes_map>;
+
+  static std::vector<Tangent_planes> own_planes(const PolygonMesh& mesh, VPM vpm, Vertex_index vertex_index)
+  {
+    if constexpr(!has_planes)
+      return planes_of_incident_faces(mesh, vpm, vertex_index);
+    else {
+      (void)mesh, (void)vpm, (void)vertex_index;
+      return {};
+    }
+  }
+
+public:
+  Tangent_plane_relaxer(PolygonMesh& mesh, const NamedParameters& np, const Progress& progress)
+    : mesh_(mesh), progress_(progress),
+      vpm_(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                              get_property_map(CGAL::vertex_point, mesh))),
+      normal_map_(CGAL::parameters::choose_parameter(
+          CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_normal_map),
+          CGAL::Constant_property_map<vertex_descriptor, Vector>(CGAL::NULL_VECTOR))),
+      vertex_index_(CGAL::get_initialized_vertex_index_map(mesh, np)),
+      own_planes_(own_planes(mesh, vpm_, vertex_index_)),
+      tangent_planes_(CGAL::parameters::choose_parameter(
+          CGAL::parameters::get_parameter(np, internal_np::vertex_tangent_planes_map),
+          boost::make_iterator_property_map(own_planes_.begin(), vertex_index_))),
+      n_(index_bound(vertices(mesh), vertex_index_))
+  {}
+
+  void run(int iterations)
+  {
+    read_vertices();
+    find_border();
+    prepare_projections();
+    const Face_corners face_corners(mesh_, vertex_index_, n_);
+    collect_neighbours();
+    for(int iteration = 0; iteration < iterations; ++iteration) {
+      for(std::size_t k = 0; k < vertex_order_.size(); ++k) {
+        // the mesh is written after the last step: a cancellation leaves it unchanged
+        progress_.report_every(Remeshing_stage::RELAXATION, std::size_t(iteration) * vertex_order_.size() + k,
+                               std::size_t(iterations) * vertex_order_.size());
+        relax_vertex(k);
+      }
+      keep_faces_unfolded(face_corners, position_, normal_, next_position_);
+      position_.swap(next_position_);
+      normal_.swap(next_normal_);
+    }
+    write_back();
+  }
+
+private:
+  std::size_t index(vertex_descriptor v) const { return get(vertex_index_, v); }
+
+  void read_vertices()
+  {
+    position_.resize(n_);
+    normal_.resize(n_);
+    next_position_.resize(n_);
+    next_normal_.resize(n_);
+    for(vertex_descriptor v : vertices(mesh_)) {
+      const std::size_t i = index(v);
+      position_[i] = to_vec3(get(vpm_, v));
+      if constexpr(has_normals)
+        normal_[i] = normalized(to_vec3(get(normal_map_, v)));
+      else
+        normal_[i] = normalized(average_normal(get(tangent_planes_, v)));
+    }
+  }
+
+  // A border vertex slides along the border it samples: the primal border edge between
+  // its two tangent planes' points (from `dualize()`), or, for a mesh that came without
+  // planes, its own two border edges as they were before the relaxation.
+  // `on_border_`: 0 inside, 1 on the border, 2 on the border but staying.
+  void find_border()
+  {
+    on_border_.assign(n_, 0);
+    for(vertex_descriptor v : vertices(mesh_))
+      on_border_[index(v)] = bool(is_border(v, mesh_));
+    border_neighbours_.resize(n_);
+    for(vertex_descriptor v : vertices(mesh_)) {
+      if(!on_border_[index(v)])
+        continue;
+      std::size_t found = 0;
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, mesh_), mesh_))
+        if(is_border(edge(h, mesh_), mesh_) && found < 2)
+          border_neighbours_[index(v)][found++] = index(source(h, mesh_));
+      if(found < 2) // not a manifold border vertex: it stays
+        on_border_[index(v)] = 2;
+    }
+    original_ = position_;
+    if constexpr(!has_planes)
+      keep_border_corners();
+  }
+
+  // corners of the border, where it turns by more than 30 degrees, stay
+  void keep_border_corners()
+  {
+    const double cos_30 = std::sqrt(3.) / 2;
+    for(std::size_t i = 0; i < n_; ++i) {
+      if(on_border_[i] != 1)
+        continue;
+      const Vec3 in = difference(original_[i], original_[border_neighbours_[i][0]]),
+                 out = difference(original_[border_neighbours_[i][1]], original_[i]);
+      const double lengths = std::sqrt(dot(in, in) * dot(out, out));
+      if(!(dot(in, out) >= cos_30 * lengths))
+        on_border_[i] = 2;
+    }
+  }
+
+  Vec3 slide_along_border(std::size_t i, const Vec3& p, const Tangent_planes& planes) const
+  {
+    if(on_border_[i] != 1)
+      return position_[i];
+    if constexpr(has_planes) {
+      if(planes.size() != 2)
+        return position_[i];
+      return closest_on_segment(p, planes[0].first, planes[1].first);
+    } else {
+      (void)planes;
+      const Vec3 x = closest_on_segment(p, original_[border_neighbours_[i][0]], original_[i]);
+      const Vec3 y = closest_on_segment(p, original_[i], original_[border_neighbours_[i][1]]);
+      const Vec3 dx = difference(x, p), dy = difference(y, p);
+      return dot(dx, dx) <= dot(dy, dy) ? x : y;
+    }
+  }
+
+  // Each vertex's quadric, decomposed once: the projection that undoes the shrinking.
+  // A vertex placed on a primal face that encloses nothing, on an opened crease, stays there.
+  // What each iteration fits a vertex to, made once: its planes with unit normals
+  // (flat, by vertex index) and the box of their points (all of space if none), which
+  // the averaged position is clamped to: a vertex relaxed on tangent planes stays over
+  // the piece of surface they sample (past a crease, say, they no longer describe it).
+  void prepare_projections()
+  {
+    projection_.resize(n_);
+    on_face_without_area_.assign(n_, 0);
+    first_unit_plane_.assign(n_, 0);
+    end_unit_plane_.assign(n_, 0);
+    const double unbounded = std::numeric_limits<double>::infinity();
+    planes_box_.assign(n_, {{{-unbounded, -unbounded, -unbounded}}, {{unbounded, unbounded, unbounded}}});
+    std::vector<Vec3> scratch;
+    std::size_t prepared = 0;
+    for(vertex_descriptor v : vertices(mesh_)) {
+      progress_.report_at_every(Remeshing_stage::RELAXATION, prepared++, 0.0); // the steps not begun
+      const std::size_t i = index(v);
+      if(on_border_[i])
+        continue;
+      const auto& planes = get(tangent_planes_, v);
+      on_face_without_area_[i] = planes_of_face_without_area(planes, scratch);
+      if(on_face_without_area_[i])
+        continue; // it stays: no projection needed
+      Quadric quadric;
+      quadric.add_planes(planes);
+      projection_[i] = Quadric_projection(decomposition_of(tangent_planes_, v, quadric), quadric_truncation);
+      first_unit_plane_[i] = unit_planes_.size();
+      for(const auto& plane : planes)
+        unit_planes_.emplace_back(plane.first, normalized(plane.second));
+      end_unit_plane_[i] = unit_planes_.size();
+      if(!planes.empty())
+        planes_box_[i] = points_box(planes);
+    }
+  }
+
+  // The neighbours each vertex is averaged with, by index, in flat arrays walked at
+  // every iteration. A border vertex moves along the border only: its border neighbours.
+  void collect_neighbours()
+  {
+    first_neighbour_.assign(1, 0);
+    for(vertex_descriptor v : vertices(mesh_)) {
+      const std::size_t i = index(v);
+      vertex_order_.push_back(v);
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, mesh_), mesh_))
+        if(!on_border_[i] || is_border(edge(h, mesh_), mesh_))
+          neighbours_.push_back(index(source(h, mesh_)));
+      first_neighbour_.push_back(neighbours_.size());
+    }
+  }
+
+  // smooth: the average position p and unit normal m of the neighbours of vertex k
+  void smooth(std::size_t k, Vec3& p, Vec3& m) const
+  {
+    p = {{0, 0, 0}};
+    m = {{0, 0, 0}};
+    for(std::size_t c = first_neighbour_[k]; c < first_neighbour_[k + 1]; ++c) {
+      const std::size_t j = neighbours_[c];
+      for(int d = 0; d < 3; ++d) {
+        p[d] += position_[j][d];
+        m[d] += normal_[j][d];
+      }
+    }
+    const double count = double(first_neighbour_[k + 1] - first_neighbour_[k]);
+    for(int d = 0; d < 3; ++d)
+      p[d] /= count;
+    m = normalized(m);
+  }
+
+  // one step for vertex k: smooth, then project back (onto the border it samples, or
+  // onto its tangent planes)
+  void relax_vertex(std::size_t k)
+  {
+    const vertex_descriptor v = vertex_order_[k];
+    const std::size_t i = index(v);
+    Vec3 p, m;
+    smooth(k, p, m);
+    if(on_border_[i]) {
+      next_position_[i] = slide_along_border(i, p, get(tangent_planes_, v));
+      next_normal_[i] = m == Vec3{{0, 0, 0}} ? normal_[i] : m;
+      return;
+    }
+    const bool stays = on_face_without_area_[i] && m != Vec3{{0, 0, 0}}; // its normal follows
+    if(!stays && (projection_[i].constrained_directions() == 0 || m == Vec3{{0, 0, 0}})) { // nothing to project on
+      next_position_[i] = position_[i];
+      next_normal_[i] = normal_[i];
+      return;
+    }
+    next_position_[i] = stays ? position_[i] : project(i, p);
+    next_normal_[i] = m;
+  }
+
+  // project: the nearest minimiser of vertex i's planes to p, clamped to their box
+  Vec3 project(std::size_t i, const Vec3& p) const
+  {
+    const auto planes =
+        CGAL::make_range(unit_planes_.cbegin() + first_unit_plane_[i], unit_planes_.cbegin() + end_unit_plane_[i]);
+    return projection_[i].fit_nearest_planes(clamped_to_box(p, planes_box_[i]), planes);
+  }
+
+  void write_back()
+  {
+    for(vertex_descriptor v : vertices(mesh_)) {
+      const std::size_t i = index(v);
+      put(vpm_, v, Point(position_[i][0], position_[i][1], position_[i][2]));
+      if constexpr(has_normals)
+        put(normal_map_, v, Vector(normal_[i][0], normal_[i][1], normal_[i][2]));
+    }
+  }
+
+  PolygonMesh& mesh_;
+  const Progress& progress_;
+  VPM vpm_;
+  Normal_map normal_map_;
+  Vertex_index vertex_index_;
+  std::vector<Tangent_planes> own_planes_; // the planes of the incident faces, without a map
+  Planes_map tangent_planes_;
+  std::size_t n_;
+
+  std::vector<Vec3> position_, normal_, next_position_, next_normal_, original_; // by vertex index
+  std::vector<std::uint8_t> on_border_;
+  std::vector<std::array<std::size_t, 2>> border_neighbours_;
+  std::vector<Quadric_projection> projection_;
+  std::vector<std::uint8_t> on_face_without_area_;
+  std::vector<std::pair<Vec3, Vec3>> unit_planes_;
+  std::vector<std::size_t> first_unit_plane_, end_unit_plane_;
+  std::vector<std::pair<Vec3, Vec3>> planes_box_;
+  std::vector<vertex_descriptor> vertex_order_;
+  std::vector<std::size_t> first_neighbour_, neighbours_;
+};
+
+} // namespace internal
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_INTERNAL_TANGENT_PLANE_RELAXER_H
