@@ -145,9 +145,12 @@ const char* usage =
     "  --stats               print one JSON object with counts and times on stdout\n"
     "  --strict              refuse an input that needs repairs instead of repairing it\n"
     "  --ascii               write PLY and STL as text (default: binary)\n"
-    "  --help                print this help and exit\n"
-    "  --version             print the program's and CGAL's versions and exit\n"
+    "  --help                print this help and exit (the only argument)\n"
+    "  --version             print the program's and CGAL's versions and exit (the\n"
+    "                          only argument)\n"
     "  --                    ends the options: INPUT and OUTPUT may start with '-'\n"
+    "Numbers are decimal: an optional sign, digits with an optional fraction, an\n"
+    "optional exponent (0.01, +5, 1e-3); no spaces, hexadecimal, inf or nan.\n"
     "\n"
     "exit status: 0 on success, 2 on bad arguments, unusable input or the time limit,\n"
     "130 when interrupted (Ctrl-C); no file is written unless the status is 0.\n";
@@ -273,12 +276,61 @@ private:
   bool shown_ = false, timed_out_ = false;
 };
 
+/// `text` between quotes, with its control characters (a newline) escaped: a message
+/// quoting it stays one line.
+std::string quoted(const std::string& text)
+{
+  std::string out = "'";
+  for(const unsigned char c : text) {
+    if(c < 0x20 || c == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", unsigned(c));
+      out += escaped;
+    } else {
+      out += char(c);
+    }
+  }
+  return out + "'";
+}
+
+/// Whether `text` is a decimal number: an optional sign, digits with an optional
+/// fraction (or a fraction alone), an optional exponent; nothing else (no spaces, no
+/// hexadecimal, no inf or nan).
+bool is_decimal_number(const char* text)
+{
+  const auto digits = [&text] {
+    const char* start = text;
+    while(*text >= '0' && *text <= '9')
+      ++text;
+    return text != start;
+  };
+  if(*text == '+' || *text == '-')
+    ++text;
+  bool mantissa = digits();
+  if(*text == '.') {
+    ++text;
+    mantissa = digits() || mantissa;
+  }
+  if(!mantissa)
+    return false;
+  if(*text == 'e' || *text == 'E') {
+    ++text;
+    if(*text == '+' || *text == '-')
+      ++text;
+    if(!digits())
+      return false;
+  }
+  return *text == '\0';
+}
+
+/// The value of an option's number (see is_decimal_number()), which must be finite.
 double parse_number(const std::string& option, const char* text)
 {
-  char* end = nullptr;
-  const double value = std::strtod(text, &end);
-  if(end == text || *end != '\0' || !std::isfinite(value))
-    fail(option + " expects a finite number, got '" + text + "'");
+  if(!is_decimal_number(text))
+    fail(option + " expects a decimal number (such as 0.01, 5 or 1e-3), got " + quoted(text));
+  const double value = std::strtod(text, nullptr); // the "C" locale: the program sets none
+  if(!std::isfinite(value))
+    fail(option + " expects a finite number, got " + quoted(text));
   return value;
 }
 
@@ -293,6 +345,8 @@ Options parse_arguments(int argc, char** argv)
         fail(arg + " expects a value");
       return argv[++a];
     };
+    if((arg == "--help" || arg == "-h" || arg == "--version") && argc > 2)
+      fail(arg + " takes no other argument (got " + quoted(a > 1 ? argv[1] : argv[2]) + ")");
     if(arg == "--help" || arg == "-h") {
       std::cout << usage;
       std::exit(EXIT_SUCCESS);
@@ -363,7 +417,7 @@ Options parse_arguments(int argc, char** argv)
     } else if(arg == "--time-limit") {
       options.time_limit = parse_number(arg, value());
       if(!(options.time_limit > 0) || options.time_limit > 1e9)
-        fail("--time-limit expects a number of seconds between 0 and 10^9");
+        fail("--time-limit expects a number of seconds above 0 and at most 10^9");
     } else if(arg == "--quiet") {
       options.quiet = true;
     } else if(arg == "--stats") {
@@ -376,7 +430,7 @@ Options parse_arguments(int argc, char** argv)
       positional.insert(positional.end(), argv + a + 1, argv + argc);
       break;
     } else if(!arg.empty() && arg[0] == '-' && arg != "-") {
-      fail("unknown option '" + arg + "' (see --help)");
+      fail("unknown option " + quoted(arg) + " (see --help)");
     } else {
       positional.push_back(arg);
     }
@@ -736,6 +790,17 @@ std::size_t vertex_cap(const Options& options)
   return cap;
 }
 
+/// Refuses a --target-vertices above the cap `cap`, which no cell size could give
+/// without exceeding it: the search would only run in vain.
+void check_target_vertices(const Options& options, std::size_t cap)
+{
+  if(options.target_vertices > 0 && std::size_t(options.target_vertices) > cap)
+    fail("--target-vertices " + std::to_string(options.target_vertices) + " is above the cap of " +
+         std::to_string(cap) + " output vertices (" +
+         (options.max_vertices > 0 ? "--max-vertices" : "the default for the available memory") +
+         "): ask for fewer, or raise the cap with --max-vertices");
+}
+
 /// Remeshes with the map of the options, at cell size `h` or, with --target-vertices,
 /// at the one the library finds from it. In relative mode (length_unit = the
 /// bounding-box diagonal) the weights are scaled so that a cell of size H bounds
@@ -960,6 +1025,7 @@ int main(int argc, char** argv)
     if(!options.topology_report.empty() && !is_supported_format(options.topology_report))
       fail("cannot write '" + options.topology_report + "': unsupported format (use .off .obj .ply .stl)");
     check_report_path(options);
+    check_target_vertices(options, vertex_cap(options)); // before any work
     std::vector<RSR::Topology_defect<Mesh::Face_index>> defects;
     options.defects = &defects;
     Io_times io;
@@ -968,7 +1034,9 @@ int main(int argc, char** argv)
     io.repair_ms = read.repair_ms;
     const Mesh input = with_creases_opened(std::move(read.mesh), options);
     // once, the input read: the runs of --target-vertices and --preserve-topology share it
-    options.max_vertices = vertex_cap(options);
+    const std::size_t cap = vertex_cap(options);
+    check_target_vertices(options, cap); // the memory left may have lowered the default cap
+    options.max_vertices = cap;
 
     double h = options.cell_size;
     if(!options.absolute) {

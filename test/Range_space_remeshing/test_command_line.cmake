@@ -25,6 +25,7 @@ macro(run expected output)
     if(NOT "${output}" STREQUAL "NONE" AND EXISTS ${WORK_DIR}/${output})
       message(SEND_ERROR "output ${output} was created by a failing run: ${ARGN}")
       math(EXPR failures "${failures} + 1")
+      file(REMOVE ${WORK_DIR}/${output}) # not blamed on the next runs
     endif()
     file(GLOB leftovers ${WORK_DIR}/.*.tmp* ${WORK_DIR}/.rsr-*)
     if(leftovers)
@@ -367,6 +368,39 @@ run(2 x.off --relax -1 ${elephant} x.off)
 run(2 x.off --relax 2.5 ${elephant} x.off)
 run(2 x.off --target-vertices 2.5 ${elephant} x.off)
 run(2 x.off --max-vertices 0 ${elephant} x.off)
+# numbers are decimal (sign, digits, fraction, exponent) and finite, nothing else:
+# no hexadecimal, inf, nan, overflow, spaces (issue 38)
+foreach(bad_number 0x3 0X1p1 inf nan infinity 1e5000 -1e5000 " 1" "1 " "1\n" . +-1 1e 1e+ 1,5 1_0 e5)
+  run(2 x.off --relax "${bad_number}" ${elephant} x.off)
+  expect_message("^range_space_remesh: --relax expects a (decimal|finite) number" "--relax '${bad_number}'")
+endforeach()
+foreach(good_number 1.0 1. +2 2E0 .5e1 0.02e2)
+  run(0 number.off --relax ${good_number} --cell-size 0.05 ${elephant} number.off)
+endforeach()
+run(0 number.off --cell-size +.05 ${elephant} number.off)
+run(2 x.off --cell-size 0x0.1p0 ${elephant} x.off)
+expect_message("--cell-size expects a decimal number" "--cell-size in hexadecimal")
+# a range says what it accepts
+run(2 x.off --time-limit 0 ${elephant} x.off)
+expect_message("--time-limit expects a number of seconds above 0 and at most 10\\^9\n$" "--time-limit 0")
+# --help and --version stand alone: anything beside them is refused, one line, exit 2
+foreach(alone --help -h --version)
+  run(2 NONE ${alone} extra)
+  expect_message("^range_space_remesh: ${alone} takes no other argument \\(got 'extra'\\)\n$" "${alone} extra")
+  run(2 NONE ${alone} --bogus)
+  run(2 NONE --cell-size 0.1 ${alone})
+  run(2 x.off ${alone} ${elephant} x.off)
+endforeach()
+run(2 NONE --version --help)
+# a target above the vertex cap is refused before any work (the input is not even
+# read: a missing one is not what the message is about), naming both numbers and
+# the option that raises the cap
+run(2 x.off --target-vertices 100000000 missing.off x.off)
+expect_message("--target-vertices 100000000 is above the cap of [0-9]+ output vertices.*--max-vertices"
+               "--target-vertices above the default cap")
+run(2 x.off --target-vertices 5000 --max-vertices 1000 missing.off x.off)
+expect_message("--target-vertices 5000 is above the cap of 1000 output vertices \\(--max-vertices\\)"
+               "--target-vertices above --max-vertices")
 # a cell size whose output exceeds the cap: refused before it is built, with the way out
 run(2 x.off --max-vertices 1000 --cell-size 0.005 ${elephant} x.off)
 expect_message("more than the cap of 1000.*--max-vertices" max-vertices)
