@@ -124,7 +124,9 @@ inline void keep_faces_unfolded(const Face_corners& fc, const std::vector<Vec3>&
                                 const std::vector<Vec3>& normal, std::vector<Vec3>& next_position)
 {
   auto newly_folded = [&](std::size_t k) {
-    return is_folded_or_non_convex(fc, k, next_position, normal) && !is_folded_or_non_convex(fc, k, position, normal);
+    // a fold is refused even where the face was non-convex before
+    return (is_folded(fc, k, next_position, normal) && !is_folded(fc, k, position, normal)) ||
+           (is_folded_or_non_convex(fc, k, next_position, normal) && !is_folded_or_non_convex(fc, k, position, normal));
   };
   std::vector<std::size_t> found, again;
   for(std::size_t k = 0; k < fc.size(); ++k)
