@@ -91,6 +91,33 @@ inline bool is_folded(const Face_corners& fc, std::size_t k, const std::vector<V
   return dot(area, reference) < 0;
 }
 
+/// Whether face k, at these positions, is folded (as `is_folded()`) or has a corner
+/// that turns against its vector-area normal: (e_next x e_prev) . area <= 0, the
+/// criterion of the benchmark's quality measure (no threshold: the sign only).
+inline bool is_folded_or_non_convex(const Face_corners& fc, std::size_t k, const std::vector<Vec3>& position,
+                                    const std::vector<Vec3>& normal)
+{
+  if(is_folded(fc, k, position, normal))
+    return true;
+  Vec3 area = {{0, 0, 0}};
+  const std::size_t begin = fc.first[k], end = fc.first[k + 1];
+  const Vec3& origin = position[fc.corners[begin]];
+  for(std::size_t c = begin; c < end; ++c) {
+    const Vec3 ab = cross(difference(position[fc.corners[c]], origin),
+                          difference(position[fc.corners[c + 1 < end ? c + 1 : begin]], origin));
+    for(int d = 0; d < 3; ++d)
+      area[d] += ab[d];
+  }
+  for(std::size_t c = begin; c < end; ++c) {
+    const Vec3& p = position[fc.corners[c]];
+    const Vec3 next = difference(position[fc.corners[c + 1 < end ? c + 1 : begin]], p);
+    const Vec3 prev = difference(position[fc.corners[c > begin ? c - 1 : end - 1]], p);
+    if(!(dot(cross(next, prev), area) > 0))
+      return true;
+  }
+  return false;
+}
+
 /// Takes back the moves of an iteration that fold a face that was not folded: the
 /// average of the neighbours can pull a vertex across a concave crease or corner,
 /// where the planes it is projected on do not hold it, and the face then spans the
@@ -102,7 +129,9 @@ inline void keep_faces_unfolded(const Face_corners& fc, const std::vector<Vec3>&
                                 const std::vector<Vec3>& normal, std::vector<Vec3>& next_position)
 {
   auto newly_folded = [&](std::size_t k) {
-    return is_folded(fc, k, next_position, normal) && !is_folded(fc, k, position, normal);
+    // a fold is refused even where the face was non-convex before
+    return (is_folded(fc, k, next_position, normal) && !is_folded(fc, k, position, normal)) ||
+           (is_folded_or_non_convex(fc, k, next_position, normal) && !is_folded_or_non_convex(fc, k, position, normal));
   };
   std::vector<std::size_t> found, again;
   for(std::size_t k = 0; k < fc.size(); ++k)
