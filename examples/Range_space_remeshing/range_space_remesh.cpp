@@ -68,7 +68,7 @@ const char* usage =
     "\n"
     "Remeshes the triangle mesh INPUT (closed or with border) by intersecting its\n"
     "image under a map f with a uniform grid of cell size H in the range space, and\n"
-    "writes OUTPUT.\n"
+    "writes OUTPUT (which may not be INPUT).\n"
     "Formats (by extension): .off .obj .ply .stl. Polygonal input is triangulated.\n"
     "Input that is not an oriented 2-manifold (STL soups, non-manifold vertices or\n"
     "edges, inconsistent orientation, duplicate or degenerate faces) is repaired\n"
@@ -202,12 +202,18 @@ struct Options
 /// program checks it again after the remesh and before the files are renamed.
 volatile std::sig_atomic_t interrupted = 0;
 
+/// Set as the files start to be renamed into place: a Ctrl-C from then on comes too
+/// late and is ignored, as the run ends with its files written and exit 0.
+volatile std::sig_atomic_t committing = 0;
+
 /// What an interrupted run says on stderr, whenever Ctrl-C came.
 constexpr char interrupted_line[] = "range_space_remesh: interrupted: nothing was written\n";
 constexpr int interrupted_status = 130; // 128 + SIGINT, as the shells report it
 
 extern "C" void cancel_on_interrupt(int)
 {
+  if(committing)
+    return;
   // while files are written (or at a second Ctrl-C, as when the reading takes long),
   // stop here: remove the temporary files, say so, exit; all async-signal-safe
   if(rsr_io::internal::has_pending_files() || interrupted) {
@@ -993,20 +999,28 @@ void print_stats(const Options& options, const Mesh& input, const Mesh& output, 
   std::cout << j.dump(-1, ' ', false, error_handler) << std::endl;
 }
 
-/// Refuses a report file that would overwrite INPUT or OUTPUT.
-void check_report_path(const Options& options)
+/// Whether two paths name the same file: the same name, the same canonical path (the
+/// file may not exist yet), or the same existing file under another name (a hard link).
+bool same_file(const std::string& a, const std::string& b)
 {
+  namespace fs = std::filesystem;
+  std::error_code a_error, b_error, equivalent_error;
+  const fs::path canonical_a = fs::weakly_canonical(fs::absolute(a, a_error), a_error);
+  const fs::path canonical_b = fs::weakly_canonical(fs::absolute(b, b_error), b_error);
+  return a == b || (!a_error && !b_error && canonical_a == canonical_b) || fs::equivalent(a, b, equivalent_error);
+}
+
+/// Refuses an OUTPUT that would overwrite INPUT (the input would be lost for a remesh
+/// of it), and a report that would overwrite INPUT or OUTPUT.
+void check_output_paths(const Options& options)
+{
+  if(same_file(options.output, options.input))
+    fail("OUTPUT '" + options.output + "' would overwrite INPUT; write the remesh to another file");
   if(options.topology_report.empty())
     return;
-  namespace fs = std::filesystem;
-  std::error_code error;
-  const fs::path report = fs::weakly_canonical(fs::absolute(options.topology_report, error), error);
-  for(const std::string& other : {options.input, options.output}) {
-    std::error_code other_error; // (equivalent(): the same file under another name, a hard link)
-    if(options.topology_report == other || (!error && report == fs::weakly_canonical(fs::absolute(other, other_error), other_error)) ||
-       fs::equivalent(options.topology_report, other, other_error))
+  for(const std::string& other : {options.input, options.output})
+    if(same_file(options.topology_report, other))
       fail("--topology-report '" + options.topology_report + "' would overwrite '" + other + "'");
-  }
 }
 
 } // namespace
@@ -1024,7 +1038,7 @@ int main(int argc, char** argv)
       fail("cannot write '" + options.output + "': unsupported format (use .off .obj .ply .stl)");
     if(!options.topology_report.empty() && !is_supported_format(options.topology_report))
       fail("cannot write '" + options.topology_report + "': unsupported format (use .off .obj .ply .stl)");
-    check_report_path(options);
+    check_output_paths(options);
     check_target_vertices(options, vertex_cap(options)); // before any work
     std::vector<RSR::Topology_defect<Mesh::Face_index>> defects;
     options.defects = &defects;
@@ -1099,7 +1113,8 @@ int main(int argc, char** argv)
       if(!options.topology_report.empty())
         files.add(flagged_faces(input, defects), options.topology_report, static_cast<const Color_map*>(nullptr),
                   write_options);
-      stop_if_interrupted(); // a Ctrl-C during the renames comes too late: the files are written
+      stop_if_interrupted(); // a Ctrl-C from here on comes too late: the files are written
+      committing = 1;
       files.commit();
     } catch(const rsr_io::Write_error& e) {
       fail(e.what());

@@ -297,7 +297,7 @@ foreach(open_mesh elephant-with-holes mech-holes-shark)
   endif()
 endforeach()
 file(WRITE ${WORK_DIR}/triangle.off "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
-run(0 triangle.off --cell-size 0.2 triangle.off triangle.off)
+run(0 triangle_out.off --cell-size 0.2 triangle.off triangle_out.off)
 
 # determinism: same input and options, same bytes
 run(0 b.off --cell-size 0.01 ${elephant} b.off)
@@ -614,6 +614,14 @@ file(COPY ${elephant} DESTINATION ${WORK_DIR}/own)
 run(2 NONE --cell-size 0.05 --topology-report ${WORK_DIR}/own/elephant.off ${WORK_DIR}/own/elephant.off r.off)
 expect_message("would overwrite" "a report over the input")
 run(2 r.off --cell-size 0.05 --topology-report ./r.off ${elephant} r.off)
+# nor may OUTPUT overwrite INPUT (by name, by another path to it, by a hard link)
+run(2 NONE --cell-size 0.05 ${WORK_DIR}/own/elephant.off ${WORK_DIR}/own/elephant.off)
+expect_message("would overwrite INPUT" "an output over the input")
+run(2 NONE --cell-size 0.05 ${WORK_DIR}/own/elephant.off ${WORK_DIR}/own/../own/elephant.off)
+file(REMOVE ${WORK_DIR}/own/linked.off)
+file(CREATE_LINK ${WORK_DIR}/own/elephant.off ${WORK_DIR}/own/linked.off)
+run(2 NONE --cell-size 0.05 ${WORK_DIR}/own/elephant.off ${WORK_DIR}/own/linked.off)
+expect_message("would overwrite INPUT" "an output over a hard link to the input")
 file(SHA256 ${elephant} original_hash)
 file(SHA256 ${WORK_DIR}/own/elephant.off copied_hash)
 if(NOT original_hash STREQUAL copied_hash)
@@ -713,6 +721,24 @@ else()
       message(SEND_ERROR "SIGINT while renaming: the file differs from an uninterrupted run's")
       math(EXPR failures "${failures} + 1")
     endif()
+  endif()
+  # two Ctrl-C after the renames (at the writes of the repair line to stderr): too late,
+  # the run ends as it would have, exit 0; it used to exit 130 saying nothing was written
+  set(late_err ${WORK_DIR}/after_renaming.err)
+  file(REMOVE ${WORK_DIR}/after_renaming.off)
+  execute_process(COMMAND ${CMAKE_COMMAND} -E env "ASAN_OPTIONS=${asan_options}"
+                          ${STRACE} -f -qq -o /dev/null -P ${late_err} -e trace=write -e inject=write:signal=INT
+                          ${CLI} --cell-size 0.1 octahedron_unused.off after_renaming.off
+                  RESULT_VARIABLE code OUTPUT_QUIET ERROR_FILE ${late_err} WORKING_DIRECTORY ${WORK_DIR})
+  file(READ ${late_err} err)
+  if(EXISTS ${WORK_DIR}/after_renaming.off)
+    file(SHA256 ${WORK_DIR}/after_renaming.off late)
+    file(SHA256 ${WORK_DIR}/oct_b.off whole)
+  endif()
+  if(NOT code EQUAL 0 OR err MATCHES "interrupted" OR NOT err MATCHES "unused points removed"
+     OR NOT late STREQUAL whole)
+    message(SEND_ERROR "SIGINT twice after the renames: exit ${code}, stderr '${err}'")
+    math(EXPR failures "${failures} + 1")
   endif()
 endif()
 
