@@ -67,7 +67,10 @@ std::int32_t highest_ceiling(const Triangle& t, int P)
 }
 
 /// The lattice cell of the point where segment ab crosses x_P = level, exactly:
-/// the floor of its coordinates in the other axes, and level in axis P.
+/// the floor of its coordinates in the other axes, and level in axis P. In an axis
+/// where a and b have the same ceiling c, the crossing, strictly between them,
+/// lies in (c - 1, c] as they do: cell c - 1, with no predicate (most axes, as
+/// an edge crosses few hyperplanes).
 template <int D, class Predicates, class Point_d>
 std::array<std::int32_t, D> cell_of_crossing(const Predicates& predicates, const Point_d& a, const Point_d& b, int P,
                                              std::int32_t level)
@@ -78,6 +81,11 @@ std::array<std::int32_t, D> cell_of_crossing(const Predicates& predicates, const
   for(int q = 0; q < D; ++q) {
     if(q == P)
       continue;
+    const double ceiling = std::ceil(a[q]);
+    if(ceiling == std::ceil(b[q])) {
+      cell[q] = std::int32_t(ceiling) - 1;
+      continue;
+    }
     const double guess = a[q] + t * (b[q] - a[q]);
     std::int32_t n =
         std::int32_t(std::floor((std::min)((std::max)(guess, (std::min)(a[q], b[q])), (std::max)(a[q], b[q]))));

@@ -30,6 +30,7 @@
 
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Topology_defect.h>
+#include <CGAL/Range_space_remeshing/internal/Cell_index.h>
 #include <CGAL/Range_space_remeshing/internal/Closed_loops.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
@@ -45,18 +46,6 @@
 namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
-
-template <class Levels>
-struct Levels_hash
-{
-  std::size_t operator()(const Levels& c) const
-  {
-    std::uint64_t h = 1469598103934665603ull;
-    for(std::int32_t x : c)
-      h = (h ^ std::uint32_t(x)) * 1099511628211ull;
-    return std::size_t(h ^ (h >> 29));
-  }
-};
 
 template <class Tracer, class FaceDescriptor>
 class Topology_check
@@ -361,16 +350,14 @@ private:
 
   /// The counts above take M inside a cell with its border: a region that reaches
   /// the border has, for each open border piece between two boundary vertices in
-  /// it, -1 in chi_c (a half-open disk has chi_c = 0). Adds them back, so that such
-  /// a disk has excess 0 too; in the cells of `only` if given.
-  void add_border_pieces(Cell_map& excess, const Cell_map* only = nullptr) const
+  /// it, -1 in chi_c (a half-open disk has chi_c = 0). Calls `add(cell)` for each
+  /// piece, so that such a disk has excess 0 too.
+  template <class Add>
+  void add_border_pieces(const Add& add) const
   {
     for(const auto& v : tracer_.intersection_vertices())
-      if(v.is_boundary() && !v.is_corner() && !is_lost(v.face_id)) {
-        const Levels c = cell_ahead(v);
-        if(only == nullptr || only->count(c))
-          ++excess[c];
-      }
+      if(v.is_boundary() && !v.is_corner() && !is_lost(v.face_id))
+        add(cell_ahead(v));
   }
 
   /// The cell of a traced face, from the sector it fills at one of its vertices.
@@ -413,43 +400,204 @@ private:
         vertices_by_face_[next[vertices[x].face_id]++] = x;
   }
 
-  /// chi_c(M inside c) - (traced faces in c) for every cell: zero where the surface
-  /// is a set of disks each bounded by one traced cycle.
-  Cell_map count_per_cell()
+  // ---------------------------------------------------------- cells, by id
+  /// Gives the cells that faces of kept components meet dense ids, and lists by id
+  /// the cells of every such face; the cells where an edge crosses the grid are
+  /// found once (an exact search each), at the face that owns the edge.
+  void index_cells()
   {
     index_vertices_by_face();
-    Cell_map excess;
-    std::vector<Levels> cells;
-    std::vector<std::uint8_t> vertex_counted(input_.number_of_input_vertices(), 0);
-    Work_meter meter(*progress_, Remeshing_stage::TOPOLOGY_CHECK);
+    index_vertex_cells();
+    index_edge_crossings();
+    index_face_cells();
+  }
+
+  /// A vertex takes the id of a corner of the same face in the same cell where one
+  /// has an id already (most do): a comparison instead of a hash.
+  void index_vertex_cells()
+  {
+    vertex_cell_.assign(input_.number_of_input_vertices(), none);
     for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
       if(is_lost(f))
         continue;
-      cells_of_face(f, cells);
-      meter.add(1 + cells.size(), [&] { return 0.2 + 0.5 * f / number_of_faces_; });
-      for(const Levels& c : cells)
-        ++excess[c];
       const auto& corners = input_.corners_of(f);
-      for(int e = 0; e < 3; ++e) {
-        const std::uint32_t n = input_.neighbours_of(f)[e];
-        if(n != Input::border && n < f)
-          continue; // each edge once
-        cells_of_edge(corners[e], corners[(e + 1) % 3], cells);
-        for(const Levels& c : cells)
-          --excess[c];
+      for(int k = 0; k < 3; ++k) {
+        const std::uint32_t v = corners[k];
+        if(vertex_cell_[v] != none)
+          continue;
+        for(int other = 1; other < 3 && vertex_cell_[v] == none; ++other) {
+          const std::uint32_t w = corners[(k + other) % 3];
+          if(vertex_cell_[w] != none && input_.ceiling_of(w) == input_.ceiling_of(v))
+            vertex_cell_[v] = vertex_cell_[w];
+        }
+        if(vertex_cell_[v] == none)
+          vertex_cell_[v] = cell_index_.id_of(cell_of_vertex(v));
       }
+    }
+  }
+
+  /// Whether edge e of face f is counted at f (each edge is, at one face).
+  bool owns_edge(std::uint32_t f, int e) const
+  {
+    const std::uint32_t n = input_.neighbours_of(f)[e];
+    return n == Input::border || n > f;
+  }
+
+  void index_edge_crossings()
+  {
+    crossing_start_.assign(3 * std::size_t(number_of_faces_) + 1, 0);
+    crossing_cells_.clear();
+    std::vector<Levels> cells;
+    for(std::uint32_t f = 0; f < number_of_faces_; ++f)
+      for(int e = 0; e < 3; ++e) {
+        crossing_start_[3 * f + e] = std::uint32_t(crossing_cells_.size());
+        if(is_lost(f) || !owns_edge(f, e))
+          continue;
+        const std::uint32_t a = input_.corners_of(f)[e], b = input_.corners_of(f)[(e + 1) % 3];
+        if(input_.ceiling_of(a) == input_.ceiling_of(b))
+          continue; // no crossing
+        cells.clear();
+        add_crossing_cells(a, b, cells);
+        remove_repeats(cells);
+        const Levels cell_a = cell_of_vertex(a), cell_b = cell_of_vertex(b);
+        for(const Levels& c : cells) // the ends' cells are listed with the ends
+          if(c != cell_a && c != cell_b)
+            crossing_cells_.push_back(cell_index_.id_of(c));
+      }
+    crossing_start_.back() = std::uint32_t(crossing_cells_.size());
+  }
+
+  /// Where the crossings of edge e of face f are listed: at the face owning the edge.
+  std::size_t crossing_slot(std::uint32_t f, int e) const
+  {
+    if(owns_edge(f, e))
+      return 3 * std::size_t(f) + e;
+    const std::uint32_t n = input_.neighbours_of(f)[e];
+    const std::uint32_t a = input_.corners_of(f)[e], b = input_.corners_of(f)[(e + 1) % 3];
+    const auto& corners = input_.corners_of(n);
+    for(int k = 0; k < 3; ++k) {
+      const std::uint32_t p = corners[k], q = corners[(k + 1) % 3];
+      if(input_.neighbours_of(n)[k] == f && ((p == a && q == b) || (p == b && q == a)))
+        return 3 * std::size_t(n) + k;
+    }
+    CGAL_error_msg("Range_space_remeshing: an edge without its twin");
+    return 0;
+  }
+
+  /// Appends the ids of list [begin, end) to `ids` where not there yet; a long list
+  /// may hold repeats until `remove_repeated_ids(ids, from)`, as with cells above.
+  static void add_ids_once(const std::uint32_t* begin, const std::uint32_t* end, std::vector<std::uint32_t>& ids,
+                           std::size_t from)
+  {
+    for(; begin != end; ++begin)
+      if(ids.size() - from > searched_cells || std::find(ids.begin() + from, ids.end(), *begin) == ids.end())
+        ids.push_back(*begin);
+  }
+
+  static void remove_repeated_ids(std::vector<std::uint32_t>& ids, std::size_t from)
+  {
+    if(ids.size() - from <= searched_cells)
+      return;
+    std::sort(ids.begin() + from, ids.end());
+    ids.erase(std::unique(ids.begin() + from, ids.end()), ids.end());
+  }
+
+  const std::uint32_t* crossings_begin(std::size_t slot) const { return crossing_cells_.data() + crossing_start_[slot]; }
+  const std::uint32_t* crossings_end(std::size_t slot) const { return crossing_cells_.data() + crossing_start_[slot + 1]; }
+
+  /// Whether face f lies in one cell: its corners do and no hyperplane crosses it.
+  bool is_in_one_cell(std::uint32_t f) const
+  {
+    const auto& corners = input_.corners_of(f);
+    return vertex_start_[f] == vertex_start_[f + 1] && input_.ceiling_of(corners[0]) == input_.ceiling_of(corners[1]) &&
+           input_.ceiling_of(corners[0]) == input_.ceiling_of(corners[2]);
+  }
+
+  /// The cells a face meets: its corners', its edges' crossings', and the four
+  /// around each of its intersection vertices.
+  void index_face_cells()
+  {
+    face_start_.assign(std::size_t(number_of_faces_) + 1, 0);
+    face_cells_.clear();
+    const auto& vertices = tracer_.intersection_vertices();
+    for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
+      const std::size_t from = face_cells_.size();
+      face_start_[f] = std::uint32_t(from);
+      if(is_lost(f))
+        continue;
+      const auto& corners = input_.corners_of(f);
+      if(is_in_one_cell(f)) {
+        face_cells_.push_back(vertex_cell_[corners[0]]);
+        continue;
+      }
+      for(std::uint32_t v : corners)
+        add_ids_once(&vertex_cell_[v], &vertex_cell_[v] + 1, face_cells_, from);
+      for(int e = 0; e < 3; ++e) {
+        const std::size_t slot = crossing_slot(f, e);
+        add_ids_once(crossings_begin(slot), crossings_end(slot), face_cells_, from);
+      }
+      for(std::uint32_t x = vertex_start_[f]; x < vertex_start_[f + 1]; ++x) {
+        const auto& v = vertices[vertices_by_face_[x]];
+        for(int quadrant = 0; quadrant < 4; ++quadrant) {
+          Levels c = v.cell;
+          c[v.i] -= quadrant & 1;
+          c[v.j] -= quadrant >> 1;
+          const std::uint32_t id = cell_index_.id_of(c);
+          add_ids_once(&id, &id + 1, face_cells_, from);
+        }
+      }
+      remove_repeated_ids(face_cells_, from);
+    }
+    face_start_.back() = std::uint32_t(face_cells_.size());
+  }
+
+  /// chi_c(M inside c) - (traced faces in c) for every cell, as a map of the cells
+  /// where it is not zero: zero where the surface is a set of disks each bounded by
+  /// one traced cycle.
+  Cell_map count_per_cell()
+  {
+    index_cells();
+    std::vector<long> excess(cell_index_.size(), 0);
+    auto excess_of = [&](const Levels& c) -> long& {
+      const std::uint32_t id = cell_index_.id_of(c);
+      if(id >= excess.size())
+        excess.resize(id + 1, 0);
+      return excess[id];
+    };
+    std::vector<std::uint32_t> edge_cells;
+    Work_meter meter(*progress_, Remeshing_stage::TOPOLOGY_CHECK);
+    for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
+      meter.add(1 + face_start_[f + 1] - face_start_[f], [&] { return 0.2 + 0.5 * f / number_of_faces_; });
+      for(std::uint32_t x = face_start_[f]; x < face_start_[f + 1]; ++x)
+        ++excess[face_cells_[x]];
+      if(is_lost(f))
+        continue;
+      const auto& corners = input_.corners_of(f);
       for(int e = 0; e < 3; ++e)
-        if(!vertex_counted[corners[e]]) {
-          vertex_counted[corners[e]] = 1;
-          ++excess[cell_of_vertex(corners[e])];
+        if(owns_edge(f, e)) {
+          edge_cells.clear();
+          const std::uint32_t a = vertex_cell_[corners[e]], b = vertex_cell_[corners[(e + 1) % 3]];
+          add_ids_once(&a, &a + 1, edge_cells, 0);
+          add_ids_once(&b, &b + 1, edge_cells, 0);
+          add_ids_once(crossings_begin(3 * std::size_t(f) + e), crossings_end(3 * std::size_t(f) + e), edge_cells, 0);
+          remove_repeated_ids(edge_cells, 0);
+          for(std::uint32_t id : edge_cells)
+            --excess[id];
         }
     }
+    for(std::uint32_t id : vertex_cell_)
+      if(id != none)
+        ++excess[id];
     for(const auto& corner : complex_.traced_face_corners()) {
       meter.add(1, 0.7);
-      --excess[cell_of_traced_face(corner)];
+      --excess_of(cell_of_traced_face(corner));
     }
-    add_border_pieces(excess);
-    return excess;
+    add_border_pieces([&](const Levels& c) { ++excess_of(c); });
+    Cell_map nonzero;
+    for(std::uint32_t id = 0; id < excess.size(); ++id)
+      if(excess[id] != 0)
+        nonzero.emplace(cell_index_.cell(id), excess[id]);
+    return nonzero;
   }
 
   /// The excesses of the two cells of every loop, from the input faces meeting them
@@ -521,7 +669,10 @@ private:
         vertex_counted[v] = 0;
     }
     const Cell_map seeded = excess;
-    add_border_pieces(excess, &seeded);
+    add_border_pieces([&](const Levels& c) {
+      if(seeded.count(c))
+        ++excess[c];
+    });
     return excess;
   }
 
@@ -560,33 +711,32 @@ private:
     return c;
   }
 
-  /// Reports the cells of nonzero excess, with the faces meeting them; their number.
+  /// Reports the cells of nonzero excess (in the order of their levels), with the
+  /// faces meeting them; their number. Those cells have ids: count_per_cell() met them.
   std::size_t locate_non_disk_cells(const Cell_map& excess)
   {
-    std::unordered_map<Levels, std::size_t, Levels_hash<Levels>> defect_of_cell;
-    Work_meter meter(*progress_, Remeshing_stage::TOPOLOGY_CHECK);
-    for(const auto& entry : excess) {
-      meter.add(1, 0.7);
-      if(entry.second != 0) {
-        defect_of_cell.emplace(entry.first, defects_.size());
-        add_defect(Topology_defect_kind::NON_DISK_CELL, entry.first, std::vector<std::uint32_t>());
-      }
-    }
-    if(defect_of_cell.empty())
-      return 0;
     std::vector<Levels> cells;
+    for(const auto& entry : excess)
+      if(entry.second != 0)
+        cells.push_back(entry.first);
+    if(cells.empty())
+      return 0;
+    std::sort(cells.begin(), cells.end());
+    std::vector<std::size_t> defect_of_id(cell_index_.size(), std::size_t(-1));
+    for(const Levels& c : cells) {
+      defect_of_id[cell_index_.id_of(c)] = defects_.size();
+      add_defect(Topology_defect_kind::NON_DISK_CELL, c, std::vector<std::uint32_t>());
+    }
+    Work_meter meter(*progress_, Remeshing_stage::TOPOLOGY_CHECK);
     for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
-      if(is_lost(f))
-        continue;
-      cells_of_face(f, cells);
-      meter.add(1 + cells.size(), [&] { return 0.7 + 0.3 * f / number_of_faces_; });
-      for(const Levels& c : cells) {
-        const auto found = defect_of_cell.find(c);
-        if(found != defect_of_cell.end())
-          defects_[found->second].input_faces.push_back(input_.face_of_id(f));
+      meter.add(1 + face_start_[f + 1] - face_start_[f], [&] { return 0.7 + 0.3 * f / number_of_faces_; });
+      for(std::uint32_t x = face_start_[f]; x < face_start_[f + 1]; ++x) {
+        const std::size_t d = defect_of_id[face_cells_[x]];
+        if(d != std::size_t(-1))
+          defects_[d].input_faces.push_back(input_.face_of_id(f));
       }
     }
-    return defect_of_cell.size();
+    return cells.size();
   }
 
   const Progress* progress_ = &Progress::none();
@@ -599,6 +749,10 @@ private:
   std::vector<std::uint8_t> lost_component_; // by component
   long input_euler_characteristic_ = 0;
   std::vector<std::uint32_t> vertex_start_, vertices_by_face_; // intersection vertices by face
+  Cell_index<Levels> cell_index_;
+  std::vector<std::uint32_t> vertex_cell_;                     // cell id by input vertex
+  std::vector<std::uint32_t> crossing_start_, crossing_cells_; // by slot 3 face + edge, at the owning face
+  std::vector<std::uint32_t> face_start_, face_cells_;         // cell ids by face
   std::vector<Loop> loops_;
   std::vector<Defect> defects_;
 };
