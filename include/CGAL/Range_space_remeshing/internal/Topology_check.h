@@ -324,6 +324,14 @@ private:
       add_once(cells, cell_of_vertex(corners[e]));
     for(int e = 0; e < 3; ++e)
       add_crossing_cells(corners[e], corners[(e + 1) % 3], cells);
+    for_each_cell_around_vertices_of(f, [&](const Levels& c) { add_once(cells, c); });
+    remove_repeats(cells);
+  }
+
+  /// Calls `add(cell)` for the four cells around each intersection vertex of face f.
+  template <class Add>
+  void for_each_cell_around_vertices_of(std::uint32_t f, const Add& add) const
+  {
     const auto& vertices = tracer_.intersection_vertices();
     for(std::uint32_t x = vertex_start_[f]; x < vertex_start_[f + 1]; ++x) {
       const auto& v = vertices[vertices_by_face_[x]];
@@ -331,10 +339,9 @@ private:
         Levels c = v.cell;
         c[v.i] -= quadrant & 1;
         c[v.j] -= quadrant >> 1;
-        add_once(cells, c);
+        add(c);
       }
     }
-    remove_repeats(cells);
   }
 
   /// The cell of the border piece that starts at boundary vertex v going forward:
@@ -519,7 +526,6 @@ private:
   {
     face_start_.assign(std::size_t(number_of_faces_) + 1, 0);
     face_cells_.clear();
-    const auto& vertices = tracer_.intersection_vertices();
     for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
       const std::size_t from = face_cells_.size();
       face_start_[f] = std::uint32_t(from);
@@ -536,16 +542,10 @@ private:
         const std::size_t slot = crossing_slot(f, e);
         add_ids_once(crossings_begin(slot), crossings_end(slot), face_cells_, from);
       }
-      for(std::uint32_t x = vertex_start_[f]; x < vertex_start_[f + 1]; ++x) {
-        const auto& v = vertices[vertices_by_face_[x]];
-        for(int quadrant = 0; quadrant < 4; ++quadrant) {
-          Levels c = v.cell;
-          c[v.i] -= quadrant & 1;
-          c[v.j] -= quadrant >> 1;
-          const std::uint32_t id = cell_index_.id_of(c);
-          add_ids_once(&id, &id + 1, face_cells_, from);
-        }
-      }
+      for_each_cell_around_vertices_of(f, [&](const Levels& c) {
+        const std::uint32_t id = cell_index_.id_of(c);
+        add_ids_once(&id, &id + 1, face_cells_, from);
+      });
       remove_repeated_ids(face_cells_, from);
     }
     face_start_.back() = std::uint32_t(face_cells_.size());
