@@ -298,6 +298,16 @@ foreach(open_mesh elephant-with-holes mech-holes-shark)
 endforeach()
 file(WRITE ${WORK_DIR}/triangle.off "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n")
 run(0 triangle_out.off --cell-size 0.2 triangle.off triangle_out.off)
+# two quads around a vertex of valence 2 (as remeshes have) read as they are, even
+# with --strict (split along the same diagonal, they were refused as non-manifold)
+file(WRITE ${WORK_DIR}/doublet.off
+     "OFF\n5 2 0\n-2 0 0\n0 0.5 0\n2 0 0\n0 -0.5 0\n0.1 0 0\n4 0 1 4 3\n4 1 2 3 4\n")
+run(0 doublet_out.off --strict --stats --cell-size 0.2 doublet.off doublet_out.off)
+string(JSON doublet_faces GET "${out}" input_faces)
+if(NOT doublet_faces EQUAL 4)
+  message(SEND_ERROR "two quads around a vertex of valence 2 gave ${doublet_faces} triangles")
+  math(EXPR failures "${failures} + 1")
+endif()
 
 # determinism: same input and options, same bytes
 run(0 b.off --cell-size 0.01 ${elephant} b.off)

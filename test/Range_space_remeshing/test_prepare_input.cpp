@@ -137,6 +137,26 @@ void test_vertex_of_huge_valence()
   CHECK_EQ(euler_characteristic(mesh), 2L);
 }
 
+/// Two quadrilaterals around a vertex of valence 2 (as a quad remesh can have) whose
+/// shorter diagonals are the same segment: split along it, both gave one triangle
+/// (twice, reversed) and the soup was refused as non-manifold.
+void test_quadrilaterals_around_a_vertex_of_valence_2()
+{
+  // a, b, c, d a rhombus long in x; v, inside, is a corner of both quadrilaterals
+  const std::vector<Point> points{Point(-2, 0, 0), Point(0, 0.5, 0), Point(2, 0, 0), Point(0, -0.5, 0),
+                                  Point(0.1, 0, 0)};
+  std::vector<Point> soup_points = points;
+  Polygons polygons{{0, 1, 4, 3}, {1, 2, 3, 4}};
+  Mesh mesh;
+  const auto repairs = RSR::prepare_input(soup_points, polygons, mesh, RSR::Input_repair::REFUSE);
+  CHECK(!repairs.repaired());
+  CHECK_EQ(repairs.triangulated_polygons, std::size_t(2));
+  CHECK(CGAL::is_valid_polygon_mesh(mesh));
+  CHECK_EQ(num_faces(mesh), Mesh::size_type(4));
+  CHECK_EQ(euler_characteristic(mesh), 1L);
+  CHECK(borders_of(mesh) == std::vector<std::size_t>{4});
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -147,5 +167,6 @@ int main(int argc, char** argv)
   }
   test_same_mesh_as_cgal(argv[1]);
   test_vertex_of_huge_valence();
+  test_quadrilaterals_around_a_vertex_of_valence_2();
   return report("test_prepare_input");
 }
