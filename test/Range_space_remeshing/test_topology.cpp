@@ -14,6 +14,7 @@
 #include <CGAL/boost/graph/generators.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 
 using namespace test;
@@ -428,6 +429,22 @@ void test_maps_with_normals(const std::string& mesh_dir)
   }
 }
 
+/// remesh() with preserve_topology counts every reduction of the cell size, the
+/// dual's too (it reported only those of its last primal run: 0 for 3 here).
+void test_refinements_counted(const std::string& mesh_dir)
+{
+  Mesh elephant, quads;
+  if(!read_sample_mesh(mesh_dir, "elephant", elephant))
+    return;
+  const double h = 0.0686;
+  const RSR::Remesh_statistics stats =
+      RSR::remesh(elephant, quads, RSR::parameters::grid_spacing(h).preserve_topology(true));
+  const double reductions = std::log(h / stats.primal.cell_size) / std::log(std::sqrt(2.));
+  CHECK(stats.primal.topology_preserved());
+  CHECK(reductions > 0.5);
+  CHECK_EQ(double(stats.primal.topology_refinements), std::round(reductions));
+}
+
 void test_refined_elephant(const std::string& mesh_dir)
 {
   Mesh elephant;
@@ -450,5 +467,6 @@ int main(int argc, char** argv)
   test_loops_at_negative_levels(mesh_dir);
   test_maps_with_normals(mesh_dir);
   test_refined_elephant(mesh_dir);
+  test_refinements_counted(mesh_dir);
   return report("test_topology");
 }

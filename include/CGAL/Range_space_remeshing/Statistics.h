@@ -84,7 +84,8 @@ struct Statistics
   std::size_t input_components = 0;
   /// connected components of the output
   std::size_t output_components = 0;
-  /// times `preserve_topology` reduced the cell size before the check passed
+  /// times `preserve_topology` reduced the cell size before the check passed (in
+  /// `remesh()`, those for the dual too)
   std::size_t topology_refinements = 0;
   /// time of the check (of the last run, with `preserve_topology`)
   double time_topology_ms = 0;

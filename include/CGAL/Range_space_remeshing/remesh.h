@@ -181,8 +181,10 @@ Remesh_statistics remesh_keeping_topology(double h, const TriangleMesh& tm, Quad
       throw Remeshing_error("preserve_topology: the dual loses the topology at every cell size tried",
                             Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
     remove_all_elements(quads);
+    const std::size_t earlier_refinements = stats.primal.topology_refinements + 1; // and this one
     stats = remesh_at<ConcurrencyTag>(stats.primal.cell_size * dual_refinement_factor, tm, quads, np, np_out,
                                       improvement, progress);
+    stats.primal.topology_refinements += earlier_refinements;
   }
   return stats;
 }
