@@ -443,6 +443,18 @@ void test_refinements_counted(const std::string& mesh_dir)
   CHECK(stats.primal.topology_preserved());
   CHECK(reductions > 0.5);
   CHECK_EQ(double(stats.primal.topology_refinements), std::round(reductions));
+
+  // a count too low for the topology to be kept: the message says why
+  bool refused = false;
+  try {
+    RSR::remesh(elephant, quads, RSR::parameters::number_of_target_vertices(1000).preserve_topology(true));
+  } catch(const RSR::Remeshing_error& e) {
+    refused = e.kind() == RSR::Remeshing_error::Kind::TARGET_NOT_REACHED &&
+              std::string(e.what()).find("preserve_topology") != std::string::npos;
+    if(!refused)
+      std::cerr << "unexpected refusal: " << e.what() << std::endl;
+  }
+  CHECK(refused);
 }
 
 void test_refined_elephant(const std::string& mesh_dir)

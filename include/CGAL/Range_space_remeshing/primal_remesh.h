@@ -188,9 +188,10 @@ constexpr int maximum_target_runs = 12;
 /// Searches a cell size, from `h`, whose run gives `target` output vertices within
 /// `target_tolerance`: the count goes roughly as h^-2, refined by secant steps in
 /// log-log scale. `run(h)` does a run and returns its vertex count; the last run is the
-/// one found. A cell size refused as too small is doubled.
+/// one found. A cell size refused as too small is doubled. `keeps_topology`: the runs
+/// refine the cell size until the topology is kept (said if the count stays above).
 template <class Run>
-double search_cell_size(double h, std::size_t target, const Run& run)
+double search_cell_size(double h, std::size_t target, const Run& run, bool keeps_topology)
 {
   double previous_h = 0, previous_log_n = 0, n = 0;
   const double log_target = std::log(double(target));
@@ -216,9 +217,14 @@ double search_cell_size(double h, std::size_t target, const Run& run)
     previous_log_n = std::log(n);
     h = std::exp(std::log(h) + (log_target - std::log(n)) / slope);
   }
+  const bool kept_finer = keeps_topology && n > double(target);
   throw Remeshing_error("no cell size tried gives " + std::to_string(target) + " output vertices within " +
                             std::to_string(int(100 * target_tolerance)) + "% (the last gave " +
-                            std::to_string(std::size_t(n)) + ")",
+                            std::to_string(std::size_t(n)) + ")" +
+                            (kept_finer ? "; keeping the input's topology (preserve_topology) needs smaller "
+                                          "cells than that count: ask for more vertices, or allow the topology "
+                                          "to change"
+                                        : ""),
                         Remeshing_error::Kind::TARGET_NOT_REACHED);
 }
 
@@ -510,7 +516,7 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out, const Na
       remove_all_elements(out);
       stats = primal_remesh_at(h_try, tm, out, np_in, np_out, inspect, progress, tag);
       return stats.output_vertices;
-    });
+    }, CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np_in, internal_np::preserve_topology), false));
     return stats;
   });
 }

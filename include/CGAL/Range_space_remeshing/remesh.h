@@ -31,10 +31,16 @@ What a run of `remesh()` did, stage by stage.
 */
 struct Remesh_statistics
 {
+  /// the primal stage: grid, traced complex, topology check (with `preserve_topology`,
+  /// of the run whose output was kept)
   Statistics primal;
+  /// the dual stage: quads, repairs, dropped pieces
   Dual_statistics dual;
+  /// the quad collapse and edge rotations (all zero if not asked for)
   Collapse_statistics collapse;
+  /// time of the relaxation on tangent planes
   double time_relaxation_ms = 0;
+  /// time of the run that gave the output, from the primal stage to the relaxation
   double time_total_ms = 0;
 
   /// Whether the quads have the input's topology as far as the checks tell: the
@@ -214,7 +220,7 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
       remove_all_elements(quads);
       stats = remesh_keeping_topology<ConcurrencyTag>(h_try, tm, quads, np, np_out, improvement, progress);
       return std::size_t(num_vertices(quads));
-    });
+    }, CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::preserve_topology), false));
     return stats;
   });
 }
