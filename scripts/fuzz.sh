@@ -28,7 +28,7 @@ mkdir -p "$work/corpus" "$work/artifacts"
 export CCACHE_DIR="${CCACHE_DIR:-$HOME/.cache/ccache}"
 binary="$work/fuzz_$target"
 ccache clang++ -std=c++17 -O1 -g -DRSR_LIBFUZZER -fsanitize=fuzzer,address,undefined \
-  -Iinclude -Iexamples/Range_space_remeshing \
+  -Iinclude -Itools/range_space_remesh \
   "test/Range_space_remeshing/fuzz/fuzz_$target.cpp" -lgmp -lmpfr -o "$binary"
 parallel=()
 if [ "$jobs" -gt 1 ]; then parallel=(-jobs="$jobs" -workers="$jobs"); fi

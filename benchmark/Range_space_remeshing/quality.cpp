@@ -284,7 +284,7 @@ struct Run
 };
 
 /// The named parameters of the program's default pipeline (see remesh() in
-/// examples/Range_space_remeshing/range_space_remesh.cpp), without a range map.
+/// tools/range_space_remesh/main.cpp), without a range map.
 auto program_parameters(const Model& model, std::size_t target)
 {
   return RSR::parameters::grid_spacing(first_cell_size * model.diagonal)
