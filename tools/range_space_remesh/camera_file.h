@@ -30,10 +30,10 @@ inline RSR::Camera read_camera(const std::string& path, double& depth_weight)
   // be one endless line)
   std::error_code error;
   if(!std::filesystem::is_regular_file(path, error) || std::filesystem::file_size(path, error) > 65536 || error)
-    fail("cannot read the camera file '" + path + "' (not a regular file of at most 64 KB)");
+    fail("cannot read the camera file " + quote(path) + " (not a regular file of at most 64 KB)");
   std::ifstream in(path);
   if(!in)
-    fail("cannot read the camera file '" + path + "'");
+    fail("cannot read the camera file " + quote(path));
   std::array<double, 3> eye{}, target{}, up = {{0, 1, 0}};
   double fov = 60, width = 0, height = 0;
   bool has_eye = false, has_target = false;
@@ -48,11 +48,11 @@ inline RSR::Camera read_camera(const std::string& path, double& depth_weight)
       std::vector<double> values(count);
       for(double& x : values)
         if(!(words >> x) || !std::isfinite(x))
-          fail("camera file '" + path + "', line " + std::to_string(number) + ": '" + key + "' expects " +
+          fail("camera file " + quote(path) + ", line " + std::to_string(number) + ": " + quote(key) + " expects " +
                std::to_string(count) + " finite number(s)");
       std::string extra;
       if(words >> extra)
-        fail("camera file '" + path + "', line " + std::to_string(number) + ": unexpected '" + extra + "'");
+        fail("camera file " + quote(path) + ", line " + std::to_string(number) + ": unexpected " + quote(extra));
       return values;
     };
     if(key == "eye" || key == "target" || key == "up") {
@@ -67,11 +67,11 @@ inline RSR::Camera read_camera(const std::string& path, double& depth_weight)
       width = v[0];
       height = v[1];
     } else {
-      fail("camera file '" + path + "', line " + std::to_string(number) + ": unknown keyword '" + key + "'");
+      fail("camera file " + quote(path) + ", line " + std::to_string(number) + ": unknown keyword " + quote(key));
     }
   }
   if(!has_eye || !has_target || !(width > 0))
-    fail("camera file '" + path + "' needs eye, target and viewport lines");
+    fail("camera file " + quote(path) + " needs eye, target and viewport lines");
   try {
     const RSR::Camera camera = RSR::make_look_at_camera(eye, target, up, fov, width, height);
     const double distance = std::sqrt(CGAL::square(eye[0] - target[0]) + CGAL::square(eye[1] - target[1]) +
@@ -79,7 +79,7 @@ inline RSR::Camera read_camera(const std::string& path, double& depth_weight)
     depth_weight = height / 2 / std::tan(fov * M_PI / 360) / distance;
     return camera;
   } catch(const RSR::Remeshing_error& e) {
-    fail("camera file '" + path + "': " + e.what());
+    fail("camera file " + quote(path) + ": " + e.what());
   }
 }
 

@@ -19,11 +19,11 @@ struct Failure
 
 [[noreturn]] inline void fail(const std::string& message) { throw Failure{message}; }
 
-/// `text` between quotes, with its control characters (a newline) escaped: a message
-/// quoting it stays one line.
-inline std::string quoted(const std::string& text)
+/// `text` with its control characters (a newline) escaped: a message holding it stays
+/// one line.
+inline std::string escaped(const std::string& text)
 {
-  std::string out = "'";
+  std::string out;
   for(const unsigned char c : text) {
     if(c < 0x20 || c == 0x7f) {
       char escaped[8];
@@ -33,8 +33,11 @@ inline std::string quoted(const std::string& text)
       out += char(c);
     }
   }
-  return out + "'";
+  return out;
 }
+
+/// `text` between quotes, escaped: what a message quotes from the command line or a file.
+inline std::string quote(const std::string& text) { return "'" + escaped(text) + "'"; }
 
 } // namespace rsr_program
 

@@ -92,7 +92,7 @@ inline Input read_input(const std::string& path, bool strict)
     input.repairs = RSR::prepare_input(points, soup.polygons, input.mesh,
                                        strict ? RSR::Input_repair::REFUSE : RSR::Input_repair::REPAIR);
   } catch(const RSR::Remeshing_error& e) {
-    fail("'" + path + "': " + e.what() + (strict ? " (drop --strict to repair it)" : ""));
+    fail(quote(path) + ": " + e.what() + (strict ? " (drop --strict to repair it)" : ""));
   }
   if(!soup.colors.empty())
     add_colors_by_position(soup, input.mesh);

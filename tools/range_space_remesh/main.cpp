@@ -174,8 +174,8 @@ int main(int argc, char** argv)
   std::signal(SIGINT, cancel_on_interrupt);
   try {
     return run_program(argc, argv);
-  } catch(const Failure& f) {
-    std::cerr << "range_space_remesh: " << f.message << std::endl;
+  } catch(const Failure& f) { // escaped: a file name the reader or writer quotes may hold a newline
+    std::cerr << "range_space_remesh: " << escaped(f.message) << std::endl;
   } catch(const Interrupted&) {
     std::cerr << interrupted_line << std::flush;
     return interrupted_status;

@@ -180,10 +180,10 @@ inline bool is_decimal_number(const char* text)
 inline double parse_number(const std::string& option, const char* text)
 {
   if(!is_decimal_number(text))
-    fail(option + " expects a decimal number (such as 0.01, 5 or 1e-3), got " + quoted(text));
+    fail(option + " expects a decimal number (such as 0.01, 5 or 1e-3), got " + quote(text));
   const double value = std::strtod(text, nullptr); // the "C" locale: the program sets none
   if(!std::isfinite(value))
-    fail(option + " expects a finite number, got " + quoted(text));
+    fail(option + " expects a finite number, got " + quote(text));
   return value;
 }
 
@@ -199,7 +199,7 @@ inline Options parse_arguments(int argc, char** argv)
       return argv[++a];
     };
     if((arg == "--help" || arg == "-h" || arg == "--version") && argc > 2)
-      fail(arg + " takes no other argument (got " + quoted(a > 1 ? argv[1] : argv[2]) + ")");
+      fail(arg + " takes no other argument (got " + quote(a > 1 ? argv[1] : argv[2]) + ")");
     if(arg == "--help" || arg == "-h" || arg == "--version") { // the only argument: main() answers it
       options.request = arg == "--version" ? Options::Request::VERSION : Options::Request::HELP;
       return options;
@@ -207,7 +207,7 @@ inline Options parse_arguments(int argc, char** argv)
       const std::string name = value();
       options.map = find_range_map(name);
       if(!options.map)
-        fail("unknown map '" + name + "' (available: " + range_map_names() + ")");
+        fail("unknown map " + quote(name) + " (available: " + range_map_names() + ")");
     } else if(arg == "--sharp-angle") {
       options.sharp_angle = parse_number(arg, value());
       if(!(options.sharp_angle >= 0 && options.sharp_angle <= 180))
@@ -241,11 +241,11 @@ inline Options parse_arguments(int argc, char** argv)
     } else if(arg == "--output") {
       options.output_kind = value();
       if(options.output_kind != "primal" && options.output_kind != "dual")
-        fail("unknown output '" + options.output_kind + "' (available: dual, primal)");
+        fail("unknown output " + quote(options.output_kind) + " (available: dual, primal)");
     } else if(arg == "--placement") {
       options.placement = value();
       if(options.placement != "qem" && options.placement != "sharp" && options.placement != "average")
-        fail("unknown placement '" + options.placement + "' (available: qem, sharp, average)");
+        fail("unknown placement " + quote(options.placement) + " (available: qem, sharp, average)");
     } else if(arg == "--relax") {
       const double k = parse_number(arg, value());
       if(!(k >= 0) || k != std::floor(k) || k > 1000)
@@ -277,7 +277,7 @@ inline Options parse_arguments(int argc, char** argv)
       positional.insert(positional.end(), argv + a + 1, argv + argc);
       break;
     } else if(!arg.empty() && arg[0] == '-' && arg != "-") {
-      fail("unknown option " + quoted(arg) + " (see --help)");
+      fail("unknown option " + quote(arg) + " (see --help)");
     } else {
       positional.push_back(arg);
     }

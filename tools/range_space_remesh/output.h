@@ -60,12 +60,12 @@ inline bool same_file(const std::string& a, const std::string& b)
 inline void check_output_paths(const Options& options)
 {
   if(same_file(options.output, options.input))
-    fail("OUTPUT '" + options.output + "' would overwrite INPUT; write the remesh to another file");
+    fail("OUTPUT " + quote(options.output) + " would overwrite INPUT; write the remesh to another file");
   if(options.topology_report.empty())
     return;
   for(const std::string& other : {options.input, options.output})
     if(same_file(options.topology_report, other))
-      fail("--topology-report '" + options.topology_report + "' would overwrite '" + other + "'");
+      fail("--topology-report " + quote(options.topology_report) + " would overwrite " + quote(other));
 }
 
 /// Refuses, before any work, an OUTPUT or report of an unknown format and one that
@@ -73,9 +73,9 @@ inline void check_output_paths(const Options& options)
 inline void check_output_names(const Options& options)
 {
   if(!is_supported_format(options.output))
-    fail("cannot write '" + options.output + "': unsupported format (use .off .obj .ply .stl)");
+    fail("cannot write " + quote(options.output) + ": unsupported format (use .off .obj .ply .stl)");
   if(!options.topology_report.empty() && !is_supported_format(options.topology_report))
-    fail("cannot write '" + options.topology_report + "': unsupported format (use .off .obj .ply .stl)");
+    fail("cannot write " + quote(options.topology_report) + ": unsupported format (use .off .obj .ply .stl)");
   check_output_paths(options);
 }
 

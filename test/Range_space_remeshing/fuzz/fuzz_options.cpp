@@ -59,7 +59,7 @@ void check_refusal(const Failure& failure)
     broken("an empty message");
   for(const unsigned char c : failure.message)
     if(c < 0x20 || c == 0x7f)
-      broken("a control character in the message: " + quoted(failure.message));
+      broken("a control character in the message: " + quote(failure.message));
 }
 
 bool in(double x, double low, double high) { return x >= low && x <= high; }
@@ -86,9 +86,9 @@ void check_accepted(const Options& o, int argc)
      !(o.max_vertices == 0 || in(double(o.max_vertices), 1, 1e10)))
     broken("a vertex count out of its domain");
   if(o.output_kind != "dual" && o.output_kind != "primal")
-    broken("output " + quoted(o.output_kind));
+    broken("output " + quote(o.output_kind));
   if(o.placement != "qem" && o.placement != "sharp" && o.placement != "average")
-    broken("placement " + quoted(o.placement));
+    broken("placement " + quote(o.placement));
 }
 
 void run_one(const std::uint8_t* data, std::size_t size)
