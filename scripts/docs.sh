@@ -6,7 +6,8 @@
 #   - nothing is loaded from a CDN (the formulas use the local MathJax in html/mathjax,
 #     Debian's libjs-mathjax, so the manual renders offline);
 #   - every examples/Range_space_remeshing/*.cpp has its page (an \example entry,
-#     doc/Range_space_remeshing/examples.txt).
+#     doc/Range_space_remeshing/examples.txt); the command-line program, in tools/,
+#     is no example.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install_dependencies.sh doxygen libjs-mathjax

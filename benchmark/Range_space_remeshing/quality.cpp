@@ -283,8 +283,8 @@ struct Run
   Topology input_topology, output_topology;
 };
 
-/// The named parameters of the program's default pipeline (see remesh() in
-/// examples/Range_space_remeshing/range_space_remesh.cpp), without a range map.
+/// The named parameters of the program's default pipeline (see shared_parameters() and run()
+/// in tools/range_space_remesh/range_maps.h), without a range map.
 auto program_parameters(const Model& model, std::size_t target)
 {
   return RSR::parameters::grid_spacing(first_cell_size * model.diagonal)

@@ -402,6 +402,15 @@ foreach(alone --help -h --version)
   run(2 x.off ${alone} ${elephant} x.off)
 endforeach()
 run(2 NONE --version --help)
+# a name a message quotes (an argument, a file name) keeps it one line, escaped, whatever
+# it holds: fuzz_options found a map name with a control character printed as it was
+run(2 x.off --map "a\nb" ${elephant} x.off)
+expect_message("^range_space_remesh: unknown map 'a\\\\x0ab' " "--map with a newline")
+run(2 x.off --output "primal\n" ${elephant} x.off)
+run(2 x.off --placement "qem\r" ${elephant} x.off)
+run(2 NONE ${elephant} "x\n.xyz")
+run(2 x.off "missing\n.off" x.off)
+expect_message("^range_space_remesh: cannot open 'missing\\\\x0a.off'" "a missing INPUT with a newline")
 # a target above the vertex cap is refused before any work (the input is not even
 # read: a missing one is not what the message is about), naming both numbers and
 # the option that raises the cap

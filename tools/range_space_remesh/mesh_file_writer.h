@@ -7,8 +7,8 @@
 // all of them are written, so that a failing run creates and overwrites nothing.
 // The temporary files are removed on every error path and on SIGINT / SIGTERM.
 
-#ifndef RANGE_SPACE_REMESHING_EXAMPLES_MESH_FILE_WRITER_H
-#define RANGE_SPACE_REMESHING_EXAMPLES_MESH_FILE_WRITER_H
+#ifndef RANGE_SPACE_REMESHING_TOOLS_MESH_FILE_WRITER_H
+#define RANGE_SPACE_REMESHING_TOOLS_MESH_FILE_WRITER_H
 
 #include "mesh_file_reader.h" // extension_of
 
@@ -316,4 +316,4 @@ private:
 
 } // namespace rsr_io
 
-#endif // RANGE_SPACE_REMESHING_EXAMPLES_MESH_FILE_WRITER_H
+#endif // RANGE_SPACE_REMESHING_TOOLS_MESH_FILE_WRITER_H

@@ -17,8 +17,8 @@
 // multiple of the file's size (see kMaximum_bytes_per_file_byte), and any byte
 // sequence ends in a soup or in one Read_error.
 
-#ifndef RANGE_SPACE_REMESHING_EXAMPLES_MESH_FILE_READER_H
-#define RANGE_SPACE_REMESHING_EXAMPLES_MESH_FILE_READER_H
+#ifndef RANGE_SPACE_REMESHING_TOOLS_MESH_FILE_READER_H
+#define RANGE_SPACE_REMESHING_TOOLS_MESH_FILE_READER_H
 
 #include <algorithm>
 #include <array>
@@ -797,4 +797,4 @@ inline Polygon_soup read_mesh_file(const std::string& path)
 
 } // namespace rsr_io
 
-#endif // RANGE_SPACE_REMESHING_EXAMPLES_MESH_FILE_READER_H
+#endif // RANGE_SPACE_REMESHING_TOOLS_MESH_FILE_READER_H

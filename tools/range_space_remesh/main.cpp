@@ -1,0 +1,197 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// range_space_remesh: command-line front end of the Range_space_remeshing package.
+//
+//   range_space_remesh [options] INPUT OUTPUT
+//
+// Reads a mesh (OFF, OBJ, PLY, STL), remeshes it by intersecting its image under
+// the range map with a uniform grid, and writes the result (same formats).
+// Exit status: 0 on success, 2 on bad arguments or unusable input (one line on
+// stderr). The output file is written atomically: it never exists half-written,
+// and is not created on failure.
+//
+// Each header of this directory does one step: options.h the command line,
+// map_registry.h and range_maps.h the maps and the remesh, input.h INPUT,
+// vertex_cap.h the cap on the output's size, progress.h the progress line and
+// Ctrl-C, output.h the files written, topology_report.h and stats.h the reports.
+
+#include "camera_file.h"
+#include "failure.h"
+#include "input.h"
+#include "map_registry.h"
+#include "mesh_types.h"
+#include "options.h"
+#include "output.h"
+#include "progress.h"
+#include "range_maps.h"
+#include "stats.h"
+#include "topology_report.h"
+#include "vertex_cap.h"
+
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Range_space_remeshing/version.h>
+#include <CGAL/assertions_behaviour.h>
+#include <CGAL/version.h>
+
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <iostream>
+#include <new>
+#include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace {
+
+using namespace rsr_program;
+
+/// Answers --help and --version.
+int answer_request(const Options& options)
+{
+  if(options.request == Options::Request::HELP)
+    std::cout << usage;
+  else
+    std::cout << "range_space_remesh " RANGE_SPACE_REMESHING_VERSION_STR " (CGAL " CGAL_VERSION_STR ")\n";
+  return EXIT_SUCCESS;
+}
+
+/// The cell size in the map's units: --cell-size times the input's bounding-box
+/// diagonal (which becomes the length unit of the weights), or times the viewport's
+/// diagonal for the view map, unless --absolute. Reads the view map's camera.
+double cell_size_in_range_space(const Mesh& input, Options& options)
+{
+  double h = options.cell_size;
+  if(!options.absolute) {
+    const CGAL::Bbox_3 box = PMP::bbox(input);
+    const double dx = box.xmax() - box.xmin(), dy = box.ymax() - box.ymin(), dz = box.zmax() - box.zmin();
+    double diagonal = std::sqrt(dx * dx + dy * dy + dz * dz);
+    if(!(diagonal > 0) || !std::isfinite(diagonal)) // squares out of range (coordinates near 1e300, 1e-300)
+      diagonal = std::hypot(std::hypot(dx, dy), dz);
+    if(!(diagonal > 0))
+      fail("the input's bounding box is a single point");
+    h *= diagonal;
+    options.length_unit = diagonal;
+  }
+  if(options.map->uses_camera) {
+    if(options.camera_file.empty())
+      fail("--map " + std::string(options.map->name) + " needs --camera FILE");
+    options.camera = read_camera(options.camera_file, options.depth_weight);
+    if(!options.absolute) // H: a fraction of the viewport's diagonal
+      h = options.cell_size * std::hypot(options.camera.width, options.camera.height);
+  }
+  return h;
+}
+
+/// Runs the remesh under the progress line; the time limit becomes a Failure.
+RSR::Remesh_statistics remesh_with_progress(const Mesh& input, double h, Options& options, Mesh& output)
+{
+  const Input_normals normals(input, options.map->uses_normals && !options.seeded);
+  Progress_line progress(options);
+  options.progress = &progress;
+  RSR::Remesh_statistics stats;
+  try {
+    stats = remesh(input, normals, h, options, output);
+  } catch(const RSR::Remeshing_cancelled&) {
+    progress.clear();
+    if(interrupted)
+      throw;
+    std::ostringstream message;
+    message << "the time limit of " << progress.limit() << " s was reached: nothing was written";
+    fail(message.str());
+  }
+  progress.clear();
+  return stats;
+}
+
+/// Refuses a remesh no mesh file can hold.
+void check_remesh(const Mesh& output, const RSR::Remesh_statistics& stats)
+{
+  if(num_faces(output) == 0)
+    fail("the remesh is empty: at this cell size the surface is not resolved (" +
+         std::to_string(stats.primal.dropped_pieces + stats.dual.dropped_pieces) +
+         " degenerate pieces dropped); use a smaller cell size");
+  if(!CGAL::is_valid_polygon_mesh(output))
+    fail("internal error: the remesh is not a valid polygon mesh; please report it");
+  if(stats.dual.parallel_edges > 0)
+    fail("at this cell size the dual has " + std::to_string(stats.dual.parallel_edges) +
+         " pair(s) of parallel edges, which a mesh file cannot store; use a smaller cell size "
+         "or --output primal");
+}
+
+int run_program(int argc, char** argv)
+{
+  Options options = parse_arguments(argc, argv);
+  if(options.request != Options::Request::REMESH)
+    return answer_request(options);
+  check_output_names(options);
+  check_target_vertices(options, vertex_cap(options)); // before any work
+  std::vector<RSR::Topology_defect<Mesh::Face_index>> defects;
+  options.defects = &defects;
+  Io_times io;
+  Input read = read_input(options.input, options.strict);
+  io.read_ms = read.read_ms;
+  io.repair_ms = read.repair_ms;
+  const Mesh input = with_creases_opened(std::move(read.mesh), options);
+  // once, the input read: the runs of --target-vertices and --preserve-topology share it
+  const std::size_t cap = vertex_cap(options);
+  check_target_vertices(options, cap); // the memory left may have lowered the default cap
+  options.max_vertices = cap;
+
+  double h = cell_size_in_range_space(input, options);
+  Mesh output;
+  const RSR::Remesh_statistics stats = remesh_with_progress(input, h, options, output);
+  stop_if_interrupted(); // after the remesh's last report
+  if(options.target_vertices > 0) // the size found
+    h = stats.primal.cell_size;
+  check_remesh(output, stats);
+
+  const auto write_start = std::chrono::steady_clock::now();
+  write_outputs(options, input, output, defects);
+  io.write_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - write_start).count();
+  report_repairs(options.input, read.repairs);
+  warn_about_topology(stats, options, defects);
+  if(options.stats)
+    print_stats(options, input, output, stats, h, read.repairs, io);
+  return EXIT_SUCCESS;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  // CGAL warnings (e.g. a polygon the constrained triangulation cannot handle) are
+  // dealt with by the program, and CGAL's failed checks throw with no message of
+  // their own: CGAL's default error handler prints several lines on stderr before it
+  // throws, where the program's contract is one line per error, which the catch of
+  // std::exception below prints.
+  CGAL::set_warning_handler([](const char*, const char*, const char*, int, const char*) {});
+  CGAL::set_error_handler([](const char*, const char*, const char*, int, const char*) {});
+  rsr_io::remove_temporary_files_on_signals();
+  std::signal(SIGINT, cancel_on_interrupt);
+  try {
+    return run_program(argc, argv);
+  } catch(const Failure& f) { // escaped: a file name the reader or writer quotes may hold a newline
+    std::cerr << "range_space_remesh: " << escaped(f.message) << std::endl;
+  } catch(const Interrupted&) {
+    std::cerr << interrupted_line << std::flush;
+    return interrupted_status;
+  } catch(const RSR::Remeshing_error& e) {
+    if(e.kind() == RSR::Remeshing_error::Kind::CANCELLED) {
+      std::cerr << interrupted_line << std::flush;
+      return interrupted_status;
+    }
+    const bool capped = e.kind() == RSR::Remeshing_error::Kind::OUTPUT_TOO_LARGE;
+    std::cerr << "range_space_remesh: " << e.what()
+              << (capped ? " (use a larger --cell-size, or raise the cap with --max-vertices)" : "") << std::endl;
+  } catch(const std::bad_alloc&) {
+    std::cerr << "range_space_remesh: out of memory" << std::endl;
+  } catch(const std::exception& e) { // one line, whatever the message (CGAL's assertions have several)
+    const std::string message = e.what();
+    std::cerr << "range_space_remesh: " << message.substr(0, message.find('\n')) << std::endl;
+  }
+  return 2;
+}
