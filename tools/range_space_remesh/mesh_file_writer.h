@@ -238,8 +238,10 @@ public:
       throw Write_error("cannot write '" + path + "': unsupported format (use .off .obj .ply .stl)");
     if(ext == "stl")
       if(const std::size_t joined = internal::vertices_joined_by_stl(mesh, options.binary))
-        throw Write_error("cannot write '" + path + "': " + std::to_string(joined) + " vertices of the mesh " +
-                          "would coincide with others in STL, which stores positions only" +
+        throw Write_error("cannot write '" + path + "': " + std::to_string(joined) +
+                          (joined == 1 ? " vertex of the mesh would coincide with another"
+                                       : " vertices of the mesh would coincide with others") +
+                          " in STL, which stores positions only" +
                           (options.binary ? " (as floats)" : "") + "; write .off, .ply or .obj");
     int slot = -1;
     internal::Pending_files& pending = internal::pending_files();

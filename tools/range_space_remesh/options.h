@@ -19,6 +19,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdlib>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -187,12 +188,29 @@ inline double parse_number(const std::string& option, const char* text)
   return value;
 }
 
+/// Refuses options that would be silently ignored: a setting of a map other than the
+/// chosen one, and a cell size beside --target-vertices, which chooses it.
+inline void refuse_ignored_options(const Options& options, const std::set<std::string>& given)
+{
+  const std::string map = quote(options.map->name);
+  if(given.count("--camera") && !options.map->uses_camera)
+    fail("--camera is for --map view; the map " + map + " has no camera");
+  if(given.count("--normal-weight") && !options.map->uses_normal_weight)
+    fail("--normal-weight is for the maps with normals (position-normal...); the map " + map + " has none");
+  if(given.count("--color-weight") && !options.map->uses_colors)
+    fail("--color-weight is for the maps with colours (position-normal-color...); the map " + map + " has none");
+  if(given.count("--cell-size") && given.count("--target-vertices"))
+    fail("--cell-size and --target-vertices exclude each other: --target-vertices chooses the cell size");
+}
+
 inline Options parse_arguments(int argc, char** argv)
 {
   Options options;
   std::vector<std::string> positional;
+  std::set<std::string> given; // the options met, for refuse_ignored_options()
   for(int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
+    given.insert(arg);
     auto value = [&]() -> const char* {
       if(a + 1 >= argc)
         fail(arg + " expects a value");
@@ -284,6 +302,7 @@ inline Options parse_arguments(int argc, char** argv)
   }
   if(positional.size() != 2)
     fail("expected INPUT and OUTPUT (see --help)");
+  refuse_ignored_options(options, given);
   options.input = positional[0];
   options.output = positional[1];
   if(options.placement.empty())

@@ -63,9 +63,10 @@ inline void check_output_paths(const Options& options)
     fail("OUTPUT " + quote(options.output) + " would overwrite INPUT; write the remesh to another file");
   if(options.topology_report.empty())
     return;
-  for(const std::string& other : {options.input, options.output})
-    if(same_file(options.topology_report, other))
-      fail("--topology-report " + quote(options.topology_report) + " would overwrite " + quote(other));
+  for(const bool input : {true, false})
+    if(same_file(options.topology_report, input ? options.input : options.output))
+      fail("--topology-report " + quote(options.topology_report) + " would overwrite " +
+           (input ? "INPUT " + quote(options.input) : "OUTPUT " + quote(options.output)));
 }
 
 /// Refuses, before any work, an OUTPUT or report of an unknown format and one that
