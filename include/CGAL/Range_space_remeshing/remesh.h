@@ -35,6 +35,8 @@ struct Remesh_statistics
   Dual_statistics dual;
   Collapse_statistics collapse;
   double time_relaxation_ms = 0;
+  /// the last stage: folded and non-convex faces before and after it
+  Untangle_statistics untangle;
   double time_total_ms = 0;
 
   /// Whether the quads have the input's topology as far as the checks tell: the
@@ -154,6 +156,7 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
   if(improvement.relaxation_steps > 0)
     stats.time_relaxation_ms =
         relax_on_tangent_planes(quads, stage_parameters.number_of_relaxation_steps(improvement.relaxation_steps));
+  stats.untangle = untangle_faces(quads, stage_parameters);
   return finish();
 }
 
@@ -223,7 +226,10 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
 \ingroup PkgRangeSpaceRemeshingRef
 
 The whole pipeline: `primal_remesh()` of `tm`, `dualize()` of the result into
-`quads`, `collapse_quads()`, then `relax_on_tangent_planes()`. When the cell size
+`quads`, `collapse_quads()`, `relax_on_tangent_planes()`, then an untangling: the
+vertices of the quads left folded or non-convex (see `Untangle_statistics`), and where
+needed those around them, move on their tangent planes to raise the least corner
+quality of their faces, never making a face's shape worse. When the cell size
 resolves nothing (an empty primal, or only pieces without a dual), `quads` is left
 empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
 

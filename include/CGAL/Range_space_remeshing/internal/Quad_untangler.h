@@ -1,0 +1,234 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUAD_UNTANGLER_H
+#define CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUAD_UNTANGLER_H
+
+// The untangling after the relaxation (issue 39): the relaxation refuses moves that
+// fold a face or make it non-convex, but the faces that came so from the dual and the
+// collapse stay as they are. Here only the vertices of those faces move (and, where
+// that is not enough, the vertices around them), one at a time, each to the best of a
+// few places on its tangent planes by the least corner quality of its faces (a local
+// max-min step, as in Knupp's untangling or CGAL's angle and area smoothing), and only
+// if that raises it and makes no face of it worse in shape.
+
+#include <CGAL/Range_space_remeshing/internal/Face_corners.h>
+#include <CGAL/Range_space_remeshing/internal/Vec3.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+namespace internal {
+
+/// Counts of the faces that are not fine.
+struct Face_shape_counts
+{
+  std::size_t folded = 0, non_convex = 0;
+};
+
+/// Moves the vertices of the faces that are folded or non-convex. `Place` is called as
+/// `place(i, p)`: where vertex i goes when sent towards p (on its tangent planes, along
+/// its border), its own position if it stays.
+template <class Place>
+class Quad_untangler
+{
+public:
+  // the rounds over the tangled faces; each round moves every vertex at most once
+  static constexpr int maximum_rounds = 30;
+
+  Quad_untangler(const Face_corners& fc, std::vector<Vec3>& position, const std::vector<Vec3>& normal, Place place)
+    : fc_(fc), position_(position), normal_(normal), place_(place)
+  {}
+
+  Face_shape shape(std::size_t k) const { return shape_of(fc_, k, position_, normal_); }
+
+  /// The faces that are not fine, in order.
+  std::vector<std::size_t> tangled_faces() const
+  {
+    std::vector<std::size_t> tangled;
+    for(std::size_t k = 0; k < fc_.size(); ++k)
+      if(shape(k) != Face_shape::FINE)
+        tangled.push_back(k);
+    return tangled;
+  }
+
+  Face_shape_counts count(const std::vector<std::size_t>& faces) const
+  {
+    Face_shape_counts counts;
+    for(std::size_t k : faces) {
+      const Face_shape s = shape(k);
+      counts.folded += s == Face_shape::FOLDED;
+      counts.non_convex += s == Face_shape::NON_CONVEX;
+    }
+    return counts;
+  }
+
+  /// Rounds over the vertices of the tangled faces, in index order, until none is
+  /// left, or a round moves nothing even with the vertices around them. Returns the
+  /// faces still tangled; `moves` and `rounds` count what was done.
+  std::vector<std::size_t> run(std::vector<std::size_t> tangled, std::size_t& moves, std::size_t& rounds)
+  {
+    bool with_ring = false;
+    std::vector<std::size_t> touched;
+    for(rounds = 0; !tangled.empty() && rounds < std::size_t(maximum_rounds); ++rounds) {
+      touched = tangled;
+      std::size_t moved = 0;
+      for(std::size_t i : vertices_to_move(tangled, with_ring))
+        if(improve_vertex(i)) {
+          ++moved;
+          touched.insert(touched.end(), incident(i).begin(), incident(i).end());
+        }
+      moves += moved;
+      tangled = still_tangled(touched);
+      if(moved == 0) {
+        if(with_ring)
+          break;
+        with_ring = true; // the corners alone are stuck: free them by moving their neighbours
+      }
+    }
+    return tangled;
+  }
+
+private:
+  struct Range
+  {
+    const std::size_t *b, *e;
+    const std::size_t* begin() const { return b; }
+    const std::size_t* end() const { return e; }
+  };
+  Range incident(std::size_t i) const
+  {
+    const std::size_t* data = fc_.incident_faces.data();
+    return {data + fc_.first_face[i], data + fc_.first_face[i + 1]};
+  }
+  Range corners(std::size_t k) const
+  {
+    const std::size_t* data = fc_.corners.data();
+    return {data + fc_.first[k], data + fc_.first[k + 1]};
+  }
+
+  // the corners of the tangled faces, and with `with_ring` the corners of the faces
+  // around those, sorted: a fixed order
+  std::vector<std::size_t> vertices_to_move(const std::vector<std::size_t>& tangled, bool with_ring) const
+  {
+    std::vector<std::size_t> vertices;
+    for(std::size_t k : tangled)
+      for(std::size_t i : corners(k))
+        vertices.push_back(i);
+    if(with_ring) {
+      const std::size_t own = vertices.size();
+      for(std::size_t c = 0; c < own; ++c)
+        for(std::size_t k : incident(vertices[c]))
+          for(std::size_t j : corners(k))
+            vertices.push_back(j);
+    }
+    std::sort(vertices.begin(), vertices.end());
+    vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+    return vertices;
+  }
+
+  std::vector<std::size_t> still_tangled(std::vector<std::size_t>& faces) const
+  {
+    std::sort(faces.begin(), faces.end());
+    faces.erase(std::unique(faces.begin(), faces.end()), faces.end());
+    std::vector<std::size_t> tangled;
+    for(std::size_t k : faces)
+      if(shape(k) != Face_shape::FINE)
+        tangled.push_back(k);
+    return tangled;
+  }
+
+  // the least corner quality of the faces around vertex i
+  double local_quality(std::size_t i) const
+  {
+    double worst = 1;
+    for(std::size_t k : incident(i))
+      worst = (std::min)(worst, corner_quality(fc_, k, position_, normal_));
+    return worst;
+  }
+
+  // Where vertex i might go: the centroid of the other corners of its faces, and for
+  // each quad the corner that would make it a parallelogram, and their mean.
+  std::vector<Vec3> targets(std::size_t i) const
+  {
+    std::vector<Vec3> found;
+    Vec3 centroid = {{0, 0, 0}}, parallelograms = {{0, 0, 0}};
+    std::size_t others = 0, quads = 0;
+    for(std::size_t k : incident(i)) {
+      const Range c = corners(k);
+      const std::size_t n = c.end() - c.begin(), at = std::find(c.begin(), c.end(), i) - c.begin();
+      for(std::size_t j : c)
+        if(j != i) {
+          centroid = sum(centroid, position_[j]);
+          ++others;
+        }
+      if(n != 4)
+        continue;
+      const Vec3& a = position_[c.begin()[next_corner(at, 4)]];
+      const Vec3& b = position_[c.begin()[next_corner(next_corner(at, 4), 4)]];
+      const Vec3& d = position_[c.begin()[previous_corner(at, 4)]];
+      found.push_back(difference(sum(a, d), b));
+      parallelograms = sum(parallelograms, found.back());
+      ++quads;
+    }
+    if(quads > 1)
+      found.push_back(scaled(parallelograms, 1. / double(quads)));
+    if(others > 0)
+      found.push_back(scaled(centroid, 1. / double(others)));
+    return found;
+  }
+
+  // whether some face around vertex i is worse in shape than in `before`
+  bool makes_a_face_worse(std::size_t i, const std::vector<Face_shape>& before) const
+  {
+    std::size_t c = 0;
+    for(std::size_t k : incident(i))
+      if(shape(k) > before[c++])
+        return true;
+    return false;
+  }
+
+  // Tries each target, and the points a half, a quarter and an eighth of the way to
+  // it, on vertex i's tangent planes; keeps the best if it raises the local quality.
+  bool improve_vertex(std::size_t i)
+  {
+    const Vec3 start = position_[i];
+    std::vector<Face_shape> before;
+    for(std::size_t k : incident(i))
+      before.push_back(shape(k));
+    double best_quality = local_quality(i);
+    Vec3 best = start;
+    for(const Vec3& target : targets(i))
+      for(double step = 1; step >= 0.125; step /= 2) {
+        position_[i] = place_(i, sum(start, scaled(difference(target, start), step)));
+        if(position_[i] == start)
+          continue;
+        const double quality = local_quality(i);
+        if(quality > best_quality && !makes_a_face_worse(i, before)) {
+          best_quality = quality;
+          best = position_[i];
+        }
+      }
+    position_[i] = best;
+    return best != start;
+  }
+
+  static Vec3 sum(const Vec3& a, const Vec3& b) { return {{a[0] + b[0], a[1] + b[1], a[2] + b[2]}}; }
+  static Vec3 scaled(const Vec3& a, double s) { return {{a[0] * s, a[1] * s, a[2] * s}}; }
+
+  const Face_corners& fc_;
+  std::vector<Vec3>& position_;
+  const std::vector<Vec3>& normal_;
+  Place place_;
+};
+
+} // namespace internal
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUAD_UNTANGLER_H
