@@ -99,32 +99,36 @@ inline Face_shape shape_of(const Face_corners& fc, std::size_t k, const std::vec
              : Face_shape::NON_CONVEX;
 }
 
-/// The corner quality of face k: the least, over its corners and over two normals (its
-/// vector-area normal and its corners' mean normal), of (e_next x e_prev) . n over the
-/// edges' lengths. Positive only where the face is fine and turns left seen from the
-/// surface too, so that raising it unfolds as well as it opens reflex corners; -1 for
-/// a face with a side or an area of length 0.
+/// The corner quality of face k: at each corner, the least over two normals (its
+/// vector-area normal and its corners' mean normal) of (e_next x e_prev) . n over the
+/// edges' lengths. Positive at every corner only where the face is fine and turns left
+/// seen from the surface too, so that raising it unfolds as well as it opens reflex
+/// corners. Returns the least; adds each corner's, at most `cap`, to `capped_sum`. A
+/// face with a side or an area of length 0 counts -1 at every corner.
 inline double corner_quality(const Face_corners& fc, std::size_t k, const std::vector<Vec3>& position,
-                             const std::vector<Vec3>& normal)
+                             const std::vector<Vec3>& normal, double cap, double& capped_sum)
 {
   Vec3 area, reference;
   area_and_reference(fc, k, position, normal, area, reference);
   const Vec3 n[2] = {normalized(area), normalized(reference)};
-  if(n[0] == Vec3{{0, 0, 0}} || n[1] == Vec3{{0, 0, 0}})
-    return -1;
   const std::size_t count = fc.corner_count(k);
   const std::size_t* corner = fc.corners.data() + fc.first[k];
-  double worst = 1;
+  double worst = 1, sum = 0;
   for(std::size_t i = 0; i < count; ++i) {
     const Vec3& p = position[corner[i]];
     const Vec3 next = difference(position[corner[next_corner(i, count)]], p);
     const Vec3 prev = difference(position[corner[previous_corner(i, count)]], p);
     const double lengths = std::sqrt(dot(next, next) * dot(prev, prev));
-    if(!(lengths > 0))
+    if(!(lengths > 0) || n[0] == Vec3{{0, 0, 0}} || n[1] == Vec3{{0, 0, 0}}) {
+      capped_sum -= double(count);
       return -1;
+    }
     const Vec3 turn = cross(next, prev);
-    worst = (std::min)({worst, dot(turn, n[0]) / lengths, dot(turn, n[1]) / lengths});
+    const double q = (std::min)(dot(turn, n[0]), dot(turn, n[1])) / lengths;
+    worst = (std::min)(worst, q);
+    sum += (std::min)(q, cap);
   }
+  capped_sum += sum;
   return worst;
 }
 

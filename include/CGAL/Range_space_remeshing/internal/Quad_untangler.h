@@ -11,13 +11,15 @@
 // collapse stay as they are. Here only the vertices of those faces move (and, where
 // that is not enough, the vertices around them), one at a time, each to the best of a
 // few places on its tangent planes by the least corner quality of its faces (a local
-// max-min step, as in Knupp's untangling or CGAL's angle and area smoothing), and only
-// if that raises it and makes no face of it worse in shape.
+// max-min step, as in Knupp's untangling or CGAL's angle and area smoothing; ties
+// broken by the sum of the poor corners' qualities), and only if that raises it and
+// makes no face of it worse in shape.
 
 #include <CGAL/Range_space_remeshing/internal/Face_corners.h>
 #include <CGAL/Range_space_remeshing/internal/Vec3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
@@ -38,8 +40,11 @@ template <class Place>
 class Quad_untangler
 {
 public:
-  // the rounds over the tangled faces; each round moves every vertex at most once
-  static constexpr int maximum_rounds = 30;
+  // The rounds over the tangled faces, each moving every vertex at most once. A move
+  // raises its own vertex's quality but may lower a neighbour's: no global measure
+  // rises for sure, so the rounds are bounded. Where vertices are held on crease lines
+  // a fold can take tens of rounds of small moves to open.
+  static constexpr int maximum_rounds = 200;
 
   Quad_untangler(const Face_corners& fc, std::vector<Vec3>& position, const std::vector<Vec3>& normal, Place place)
     : fc_(fc), position_(position), normal_(normal), place_(place)
@@ -143,13 +148,27 @@ private:
     return tangled;
   }
 
-  // the least corner quality of the faces around vertex i
-  double local_quality(std::size_t i) const
+  // The quality of the faces around a vertex: the least corner quality, then the sum
+  // of the corner qualities up to `corner_cap`, which still rises where the least is
+  // at a corner the vertex cannot turn (the far corner of a quad, whose own vertex is
+  // held by another face).
+  struct Local_quality
   {
-    double worst = 1;
+    double worst, capped_sum;
+    bool operator>(const Local_quality& other) const
+    {
+      return worst > other.worst || (worst == other.worst && capped_sum > other.capped_sum);
+    }
+  };
+  static constexpr double corner_cap = 0.5; // the sine of 30 degrees: better corners do not count
+
+  Local_quality local_quality(std::size_t i) const
+  {
+    Local_quality quality{1, 0};
     for(std::size_t k : incident(i))
-      worst = (std::min)(worst, corner_quality(fc_, k, position_, normal_));
-    return worst;
+      quality.worst =
+          (std::min)(quality.worst, corner_quality(fc_, k, position_, normal_, corner_cap, quality.capped_sum));
+    return quality;
   }
 
   // Where vertex i might go: the centroid of the other corners of its faces, and for
@@ -178,9 +197,35 @@ private:
     }
     if(quads > 1)
       found.push_back(scaled(parallelograms, 1. / double(quads)));
-    if(others > 0)
+    if(others > 0) {
       found.push_back(scaled(centroid, 1. / double(others)));
+      add_compass_targets(i, found);
+    }
     return found;
+  }
+
+  // Eight points around vertex i in its tangent plane, at the mean distance to the
+  // other corners of its faces: where the least corner quality has no smooth gradient
+  // (a max-min), a search along fixed directions still finds the way up.
+  void add_compass_targets(std::size_t i, std::vector<Vec3>& found) const
+  {
+    const Vec3& x = position_[i];
+    double radius = 0;
+    std::size_t others = 0;
+    for(std::size_t k : incident(i))
+      for(std::size_t j : corners(k))
+        if(j != i) {
+          const Vec3 d = difference(position_[j], x);
+          radius += std::sqrt(dot(d, d));
+          ++others;
+        }
+    radius /= double(others);
+    const Vec3 u = normalized(any_orthogonal(normal_[i])), w = cross(normal_[i], u);
+    const double diagonal = std::sqrt(0.5);
+    const double along[8][2] = {{1, 0}, {diagonal, diagonal}, {0, 1}, {-diagonal, diagonal},
+                                {-1, 0}, {-diagonal, -diagonal}, {0, -1}, {diagonal, -diagonal}};
+    for(const auto& a : along)
+      found.push_back(sum(x, sum(scaled(u, radius * a[0]), scaled(w, radius * a[1]))));
   }
 
   // whether some face around vertex i is worse in shape than in `before`
@@ -194,21 +239,22 @@ private:
   }
 
   // Tries each target, and the points a half, a quarter and an eighth of the way to
-  // it, on vertex i's tangent planes; keeps the best if it raises the local quality.
+  // it, on vertex i's tangent planes; keeps the best if it raises the local quality
+  // (the least corner quality, or that and then the capped sum).
   bool improve_vertex(std::size_t i)
   {
     const Vec3 start = position_[i];
     std::vector<Face_shape> before;
     for(std::size_t k : incident(i))
       before.push_back(shape(k));
-    double best_quality = local_quality(i);
+    Local_quality best_quality = local_quality(i);
     Vec3 best = start;
     for(const Vec3& target : targets(i))
       for(double step = 1; step >= 0.125; step /= 2) {
         position_[i] = place_(i, sum(start, scaled(difference(target, start), step)));
         if(position_[i] == start)
           continue;
-        const double quality = local_quality(i);
+        const Local_quality quality = local_quality(i);
         if(quality > best_quality && !makes_a_face_worse(i, before)) {
           best_quality = quality;
           best = position_[i];
