@@ -57,6 +57,9 @@ struct Quad_improvement
   bool rotate_edges = true;
   std::size_t collapse_passes = 10;
   std::size_t relaxation_steps = 3;
+  // With a target vertex count, the untangling runs only in a run that the search
+  // accepts (it moves vertices, it keeps their count): not in the runs it throws away.
+  std::size_t untangle_near_target = 0;
 };
 
 template <class NamedParameters>
@@ -156,7 +159,8 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
   if(improvement.relaxation_steps > 0)
     stats.time_relaxation_ms =
         relax_on_tangent_planes(quads, stage_parameters.number_of_relaxation_steps(improvement.relaxation_steps));
-  stats.untangle = untangle_faces(quads, stage_parameters);
+  if(improvement.untangle_near_target == 0 || is_near_target(num_vertices(quads), improvement.untangle_near_target))
+    stats.untangle = untangle_faces(quads, stage_parameters);
   return finish();
 }
 
@@ -204,7 +208,8 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
     throw Remeshing_error("the input mesh has no face");
   const Progress progress = progress_of(np);
   const std::size_t target = target_vertices_of(np);
-  const Quad_improvement improvement = quad_improvement_of(np); // refused before the first run
+  Quad_improvement improvement = quad_improvement_of(np); // refused before the first run
+  improvement.untangle_near_target = target;
   remove_all_elements(quads);
   return emptied_on_cancel(quads, [&] {
     const double h = cell_size_of(tm, np);

@@ -46,8 +46,9 @@ public:
   // a fold can take tens of rounds of small moves to open.
   static constexpr int maximum_rounds = 200;
 
+
   Quad_untangler(const Face_corners& fc, std::vector<Vec3>& position, const std::vector<Vec3>& normal, Place place)
-    : fc_(fc), position_(position), normal_(normal), place_(place)
+    : fc_(fc), position_(position), normal_(normal), place_(place), stuck_(fc.first_face.size() - 1, 0)
   {}
 
   Face_shape shape(std::size_t k) const { return shape_of(fc_, k, position_, normal_); }
@@ -83,11 +84,19 @@ public:
     for(rounds = 0; !tangled.empty() && rounds < std::size_t(maximum_rounds); ++rounds) {
       touched = tangled;
       std::size_t moved = 0;
-      for(std::size_t i : vertices_to_move(tangled, with_ring))
-        if(improve_vertex(i)) {
-          ++moved;
-          touched.insert(touched.end(), incident(i).begin(), incident(i).end());
+      for(std::size_t i : vertices_to_move(tangled, with_ring)) {
+        if(stuck_[i])
+          continue;
+        if(!improve_vertex(i)) {
+          stuck_[i] = 1;
+          continue;
         }
+        ++moved;
+        touched.insert(touched.end(), incident(i).begin(), incident(i).end());
+        for(std::size_t k : incident(i))
+          for(std::size_t j : corners(k))
+            stuck_[j] = 0;
+      }
       moves += moved;
       tangled = still_tangled(touched);
       if(moved == 0) {
@@ -271,6 +280,9 @@ private:
   std::vector<Vec3>& position_;
   const std::vector<Vec3>& normal_;
   Place place_;
+  // A vertex that found no better place stays stuck until a corner of its faces moves:
+  // its search depends on those positions only, and would find nothing again.
+  std::vector<unsigned char> stuck_;
 };
 
 } // namespace internal
