@@ -106,6 +106,12 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
   j["removed_doublets"] = all.collapse.removed_doublets;
   j["rotated_edges"] = all.collapse.rotated_edges;
   j["neutral_rotations"] = all.collapse.neutral_rotations;
+  j["untangle"] = {{"folded_before", all.untangle.folded_before},
+                   {"non_convex_before", all.untangle.non_convex_before},
+                   {"folded_after", all.untangle.folded_after},
+                   {"non_convex_after", all.untangle.non_convex_after},
+                   {"moves", all.untangle.moves},
+                   {"rounds", all.untangle.rounds}};
   j["cell_size_used"] = s.cell_size;
   j["input_repairs"] = {{"repaired", repairs.repaired()},
                         {"merged_points", repairs.merged_points},
@@ -136,6 +142,7 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                   {"faces", s.time_faces_ms},     {"topology", s.time_topology_ms},
                   {"output", s.time_output_ms},   {"dual", all.dual.time_ms},
                   {"collapse", all.collapse.time_ms}, {"relaxation", all.time_relaxation_ms},
+                  {"untangle", all.untangle.time_ms},
                   {"total", all.time_total_ms},   {"write", io.write_ms}};
   std::cout << j.dump(-1, ' ', false, error_handler) << std::endl;
 }

@@ -173,6 +173,32 @@ struct Collapse_statistics
   double time_ms = 0;
 };
 
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+What the untangling at the end of `remesh()` did. A face is folded when its vector
+area faces against the sum of its corners' unit normals, non-convex when it is not
+folded but some corner turns against its vector-area normal: at a corner with sides
+e_next and e_prev, (e_next x e_prev) . n <= 0. The untangling moves only the vertices
+of such faces (and, where that is not enough, the vertices around them), on their
+tangent planes, never making a face's shape worse.
+*/
+struct Untangle_statistics
+{
+  /// folded faces when the stage began (after the relaxation)
+  std::size_t folded_before = 0;
+  /// non-convex faces when the stage began
+  std::size_t non_convex_before = 0;
+  /// folded faces in the output
+  std::size_t folded_after = 0;
+  /// non-convex faces in the output
+  std::size_t non_convex_after = 0;
+  /// vertex moves made (a vertex may move once per round)
+  std::size_t moves = 0;
+  /// rounds over the vertices of the faces still folded or non-convex
+  std::size_t rounds = 0;
+  double time_ms = 0;
+};
+
 } // namespace Range_space_remeshing
 } // namespace CGAL
 

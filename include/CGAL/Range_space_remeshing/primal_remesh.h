@@ -185,6 +185,13 @@ double default_cell_size(const TriangleMesh& tm, const RangeMap& range_map)
 constexpr double target_tolerance = 0.1;
 constexpr int maximum_target_runs = 12;
 
+/// Whether a run's vertex count is one that `search_cell_size()` accepts for `target`.
+inline bool is_near_target(std::size_t count, std::size_t target)
+{
+  const double n = double((std::max)(count, std::size_t(1)));
+  return std::abs(n - double(target)) <= target_tolerance * double(target);
+}
+
 /// Searches a cell size, from `h`, whose run gives `target` output vertices within
 /// `target_tolerance`: the count goes roughly as h^-2, refined by secant steps in
 /// log-log scale. `run(h)` does a run and returns its vertex count; the last run is the
@@ -205,7 +212,7 @@ double search_cell_size(double h, std::size_t target, const Run& run, bool keeps
       h *= 2;
       continue;
     }
-    if(std::abs(n - double(target)) <= target_tolerance * double(target))
+    if(is_near_target(std::size_t(n), target))
       return h;
     double slope = -2; // d log n / d log h
     if(previous_h > 0) {

@@ -113,6 +113,20 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+namespace internal {
+
+/// The untangling of `remesh()` (see `Untangle_statistics` and Quad_untangler.h), with
+/// the parameters of `relax_on_tangent_planes()` but its steps: after the relaxation,
+/// or in place of it.
+template <class PolygonMesh, class NamedParameters>
+Untangle_statistics untangle_faces(PolygonMesh& mesh, const NamedParameters& np)
+{
+  const Progress progress = progress_of(np);
+  return Tangent_plane_relaxer<PolygonMesh, NamedParameters>(mesh, np, progress).untangle();
+}
+
+} // namespace internal
+
 } // namespace Range_space_remeshing
 } // namespace CGAL
 

@@ -40,7 +40,9 @@ struct Remesh_statistics
   Collapse_statistics collapse;
   /// time of the relaxation on tangent planes
   double time_relaxation_ms = 0;
-  /// time of the run that gave the output, from the primal stage to the relaxation
+  /// the last stage: folded and non-convex faces before and after it
+  Untangle_statistics untangle;
+  /// time of the run that gave the output, from the primal stage to the last
   double time_total_ms = 0;
 
   /// Whether the quads have the input's topology as far as the checks tell: the
@@ -61,6 +63,9 @@ struct Quad_improvement
   bool rotate_edges = true;
   std::size_t collapse_passes = 10;
   std::size_t relaxation_steps = 3;
+  // With a target vertex count, the untangling runs only in a run that the search
+  // accepts (it moves vertices, it keeps their count): not in the runs it throws away.
+  std::size_t untangle_near_target = 0;
 };
 
 template <class NamedParameters>
@@ -160,6 +165,8 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
   if(improvement.relaxation_steps > 0)
     stats.time_relaxation_ms =
         relax_on_tangent_planes(quads, stage_parameters.number_of_relaxation_steps(improvement.relaxation_steps));
+  if(improvement.untangle_near_target == 0 || is_near_target(num_vertices(quads), improvement.untangle_near_target))
+    stats.untangle = untangle_faces(quads, stage_parameters);
   return finish();
 }
 
@@ -209,7 +216,8 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
     throw Remeshing_error("the input mesh has no face");
   const Progress progress = progress_of(np);
   const std::size_t target = target_vertices_of(np);
-  const Quad_improvement improvement = quad_improvement_of(np); // refused before the first run
+  Quad_improvement improvement = quad_improvement_of(np); // refused before the first run
+  improvement.untangle_near_target = target;
   remove_all_elements(quads);
   return emptied_on_cancel(quads, [&] {
     const double h = cell_size_of(tm, np);
@@ -231,7 +239,10 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
 \ingroup PkgRangeSpaceRemeshingRef
 
 The whole pipeline: `primal_remesh()` of `tm`, `dualize()` of the result into
-`quads`, `collapse_quads()`, then `relax_on_tangent_planes()`. When the cell size
+`quads`, `collapse_quads()`, `relax_on_tangent_planes()`, then an untangling: the
+vertices of the quads left folded or non-convex (see `Untangle_statistics`), and where
+needed those around them, move on their tangent planes to raise the least corner
+quality of their faces, never making a face's shape worse. When the cell size
 resolves nothing (an empty primal, or only pieces without a dual), `quads` is left
 empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
 

@@ -65,18 +65,27 @@ inline bool has_no_net_area(const std::vector<Vec3>& polygon, const Vec3& normal
   return std::sqrt(dot(normal, normal)) <= 2 * no_area_ratio * longest_side_squared(polygon);
 }
 
-/// Whether the polygon turns left at every corner, seen from the side of `normal`.
-inline bool is_convex(const std::vector<Vec3>& polygon, const Vec3& normal)
+/// Whether a polygon of n corners, corner i being `corner(i)`, turns left at every
+/// corner, seen from the side of `normal`: the one corner test of the collapse, the
+/// relaxation and the untangling, which hold their polygons in different containers.
+template <class Corner>
+bool turns_left_at_every_corner(std::size_t n, const Corner& corner, const Vec3& normal)
 {
-  const std::size_t n = polygon.size();
   for(std::size_t i = 0; i < n; ++i) {
-    const Vec3& p = polygon[previous_corner(i, n)];
-    const Vec3& q = polygon[i];
-    const Vec3& r = polygon[next_corner(i, n)];
+    const Vec3& p = corner(previous_corner(i, n));
+    const Vec3& q = corner(i);
+    const Vec3& r = corner(next_corner(i, n));
     if(!(dot(cross(difference(q, p), difference(r, q)), normal) > 0))
       return false;
   }
   return true;
+}
+
+/// Whether the polygon turns left at every corner, seen from the side of `normal`.
+inline bool is_convex(const std::vector<Vec3>& polygon, const Vec3& normal)
+{
+  return turns_left_at_every_corner(polygon.size(), [&](std::size_t i) -> const Vec3& { return polygon[i]; },
+                                    normal);
 }
 
 /// Whether every triangle of the fan from the polygon's first corner turns left, seen

@@ -11,12 +11,15 @@
 // and take back the moves that fold a face.
 
 #include <CGAL/Range_space_remeshing/Remeshing_stage.h>
+#include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
 #include <CGAL/Range_space_remeshing/parameters.h>
+#include <CGAL/Range_space_remeshing/internal/Face_corners.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Polygon_kernel.h>
 #include <CGAL/Range_space_remeshing/internal/Pooled_tangent_planes_map.h>
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
+#include <CGAL/Range_space_remeshing/internal/Quad_untangler.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
 #include <CGAL/Iterator_range.h>
@@ -29,6 +32,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -40,102 +44,24 @@ namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
 
-/// The corners of every face and the faces of every corner, by index, in flat arrays:
-/// what the fold test of the relaxation walks at every iteration.
-struct Face_corners
-{
-  std::vector<std::size_t> first, corners; // face k: corners[first[k]] .. corners[first[k + 1]]
-  std::vector<std::size_t> first_face, incident_faces; // vertex i: incident_faces[first_face[i]] .. [first_face[i + 1]]
-
-  template <class PolygonMesh, class VertexIndexMap>
-  Face_corners(const PolygonMesh& mesh, VertexIndexMap vertex_index, std::size_t number_of_vertices)
-  {
-    first.push_back(0);
-    for(auto f : faces(mesh)) {
-      for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-        corners.push_back(get(vertex_index, v));
-      first.push_back(corners.size());
-    }
-    first_face.assign(number_of_vertices + 1, 0);
-    for(std::size_t i : corners)
-      ++first_face[i + 1];
-    for(std::size_t i = 0; i < number_of_vertices; ++i)
-      first_face[i + 1] += first_face[i];
-    incident_faces.resize(corners.size());
-    std::vector<std::size_t> filled(first_face.begin(), first_face.end() - 1);
-    for(std::size_t k = 0; k + 1 < first.size(); ++k)
-      for(std::size_t c = first[k]; c < first[k + 1]; ++c)
-        incident_faces[filled[corners[c]]++] = k;
-  }
-  std::size_t size() const { return first.size() - 1; }
-};
-
-/// Whether face k, at these positions, faces against the normals of its corners
-/// (the sum of their unit normals): folded over its neighbours.
-inline bool is_folded(const Face_corners& fc, std::size_t k, const std::vector<Vec3>& position,
-                      const std::vector<Vec3>& normal)
-{
-  Vec3 area = {{0, 0, 0}}, reference = {{0, 0, 0}};
-  const std::size_t begin = fc.first[k], end = fc.first[k + 1];
-  const Vec3& origin = position[fc.corners[begin]]; // not (0, 0, 0): no cancellation far from it
-  for(std::size_t c = begin; c < end; ++c) {
-    const Vec3 a = difference(position[fc.corners[c]], origin);
-    const Vec3 b = difference(position[fc.corners[c + 1 < end ? c + 1 : begin]], origin);
-    const Vec3 ab = cross(a, b);
-    const Vec3& n = normal[fc.corners[c]];
-    for(int d = 0; d < 3; ++d) {
-      area[d] += ab[d];
-      reference[d] += n[d];
-    }
-  }
-  return dot(area, reference) < 0;
-}
-
-/// Whether face k, at these positions, is folded (as `is_folded()`) or has a corner
-/// that turns against its vector-area normal: (e_next x e_prev) . area <= 0, the
-/// criterion of the benchmark's quality measure (no threshold: the sign only).
-inline bool is_folded_or_non_convex(const Face_corners& fc, std::size_t k, const std::vector<Vec3>& position,
-                                    const std::vector<Vec3>& normal)
-{
-  if(is_folded(fc, k, position, normal))
-    return true;
-  Vec3 area = {{0, 0, 0}};
-  const std::size_t begin = fc.first[k], end = fc.first[k + 1];
-  const Vec3& origin = position[fc.corners[begin]];
-  for(std::size_t c = begin; c < end; ++c) {
-    const Vec3 ab = cross(difference(position[fc.corners[c]], origin),
-                          difference(position[fc.corners[c + 1 < end ? c + 1 : begin]], origin));
-    for(int d = 0; d < 3; ++d)
-      area[d] += ab[d];
-  }
-  for(std::size_t c = begin; c < end; ++c) {
-    const Vec3& p = position[fc.corners[c]];
-    const Vec3 next = difference(position[fc.corners[c + 1 < end ? c + 1 : begin]], p);
-    const Vec3 prev = difference(position[fc.corners[c > begin ? c - 1 : end - 1]], p);
-    if(!(dot(cross(next, prev), area) > 0))
-      return true;
-  }
-  return false;
-}
-
-/// Takes back the moves of an iteration that fold a face that was not folded: the
-/// average of the neighbours can pull a vertex across a concave crease or corner,
-/// where the planes it is projected on do not hold it, and the face then spans the
-/// notch. The corners of such faces go back; the faces around them are checked again,
-/// until none is left (each round puts back at least one vertex). Faces folded before
-/// may stay folded or unfold. One test per face and iteration, and more only around
-/// the few vertices put back.
+/// Takes back the moves of an iteration that make a face's shape worse (a fine face
+/// non-convex or folded, a non-convex one folded): the average of the neighbours can
+/// pull a vertex across a concave crease or corner, where the planes it is projected
+/// on do not hold it, and the face then spans the notch. The corners of such faces go
+/// back; the faces around them are checked again, until none is left (each round puts
+/// back at least one vertex). Faces folded or non-convex before may stay so or improve.
+/// One shape test per face and position per iteration, and more only around the few
+/// vertices put back.
 inline void keep_faces_unfolded(const Face_corners& fc, const std::vector<Vec3>& position,
                                 const std::vector<Vec3>& normal, std::vector<Vec3>& next_position)
 {
-  auto newly_folded = [&](std::size_t k) {
-    // a fold is refused even where the face was non-convex before
-    return (is_folded(fc, k, next_position, normal) && !is_folded(fc, k, position, normal)) ||
-           (is_folded_or_non_convex(fc, k, next_position, normal) && !is_folded_or_non_convex(fc, k, position, normal));
+  // refused: a worse shape (a fold also where the face was non-convex before)
+  auto made_worse = [&](std::size_t k) {
+    return shape_of(fc, k, next_position, normal) > shape_of(fc, k, position, normal);
   };
   std::vector<std::size_t> found, again;
   for(std::size_t k = 0; k < fc.size(); ++k)
-    if(newly_folded(k))
+    if(made_worse(k))
       found.push_back(k);
   while(!found.empty()) {
     again.clear();
@@ -152,7 +78,7 @@ inline void keep_faces_unfolded(const Face_corners& fc, const std::vector<Vec3>&
     again.erase(std::unique(again.begin(), again.end()), again.end());
     found.clear();
     for(std::size_t k : again)
-      if(newly_folded(k))
+      if(made_worse(k))
         found.push_back(k);
   }
 }
@@ -229,8 +155,62 @@ public:
     write_back();
   }
 
+  /// The untangling (see Quad_untangler.h): moves the vertices of the faces that are
+  /// folded or non-convex, and where needed those around them, on their tangent planes
+  /// (border vertices along their border). The projections are made only for the
+  /// vertices it tries to move, the mesh is written only if some face is tangled.
+  Untangle_statistics untangle()
+  {
+    const auto start = std::chrono::steady_clock::now();
+    Untangle_statistics stats;
+    read_vertices();
+    const Face_corners face_corners(mesh_, vertex_index_, n_);
+    auto place = [this](std::size_t i, const Vec3& p) { return placed(i, p); };
+    Quad_untangler<decltype(place)> untangler(face_corners, position_, normal_, place);
+    std::vector<std::size_t> tangled = untangler.tangled_faces();
+    const Face_shape_counts before = untangler.count(tangled);
+    stats.folded_before = stats.folded_after = before.folded;
+    stats.non_convex_before = stats.non_convex_after = before.non_convex;
+    if(!tangled.empty()) {
+      find_border();
+      start_projections();
+      vertex_of_index();
+      tangled = untangler.run(tangled, stats.moves, stats.rounds);
+      const Face_shape_counts after = untangler.count(tangled);
+      stats.folded_after = after.folded;
+      stats.non_convex_after = after.non_convex;
+      write_back();
+    }
+    stats.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return stats;
+  }
+
 private:
   std::size_t index(vertex_descriptor v) const { return get(vertex_index_, v); }
+
+  void vertex_of_index()
+  {
+    vertex_of_.resize(n_);
+    prepared_.assign(n_, 0);
+    for(vertex_descriptor v : vertices(mesh_))
+      vertex_of_[index(v)] = v;
+  }
+
+  // where the untangling puts vertex i sent towards p: as a relaxation step would (on
+  // its tangent planes, along its border), the projection made on first use
+  Vec3 placed(std::size_t i, const Vec3& p)
+  {
+    const vertex_descriptor v = vertex_of_[i];
+    if(on_border_[i])
+      return slide_along_border(i, p, get(tangent_planes_, v));
+    if(!prepared_[i]) {
+      prepare_projection(v, scratch_);
+      prepared_[i] = 1;
+    }
+    if(on_face_without_area_[i] || projection_[i].constrained_directions() == 0)
+      return position_[i];
+    return project(i, p);
+  }
 
   void read_vertices()
   {
@@ -313,33 +293,43 @@ private:
   // the piece of surface they sample (past a crease, say, they no longer describe it).
   void prepare_projections()
   {
+    start_projections();
+    std::vector<Vec3> scratch;
+    std::size_t prepared = 0;
+    for(vertex_descriptor v : vertices(mesh_)) {
+      progress_.report_at_every(Remeshing_stage::RELAXATION, prepared++, 0.0); // the steps not begun
+      prepare_projection(v, scratch);
+    }
+  }
+
+  void start_projections()
+  {
     projection_.resize(n_);
     on_face_without_area_.assign(n_, 0);
     first_unit_plane_.assign(n_, 0);
     end_unit_plane_.assign(n_, 0);
     const double unbounded = std::numeric_limits<double>::infinity();
     planes_box_.assign(n_, {{{-unbounded, -unbounded, -unbounded}}, {{unbounded, unbounded, unbounded}}});
-    std::vector<Vec3> scratch;
-    std::size_t prepared = 0;
-    for(vertex_descriptor v : vertices(mesh_)) {
-      progress_.report_at_every(Remeshing_stage::RELAXATION, prepared++, 0.0); // the steps not begun
-      const std::size_t i = index(v);
-      if(on_border_[i])
-        continue;
-      const auto& planes = get(tangent_planes_, v);
-      on_face_without_area_[i] = planes_of_face_without_area(planes, scratch);
-      if(on_face_without_area_[i])
-        continue; // it stays: no projection needed
-      Quadric quadric;
-      quadric.add_planes(planes);
-      projection_[i] = Quadric_projection(decomposition_of(tangent_planes_, v, quadric), quadric_truncation);
-      first_unit_plane_[i] = unit_planes_.size();
-      for(const auto& plane : planes)
-        unit_planes_.emplace_back(plane.first, normalized(plane.second));
-      end_unit_plane_[i] = unit_planes_.size();
-      if(!planes.empty())
-        planes_box_[i] = points_box(planes);
-    }
+  }
+
+  void prepare_projection(vertex_descriptor v, std::vector<Vec3>& scratch)
+  {
+    const std::size_t i = index(v);
+    if(on_border_[i])
+      return;
+    const auto& planes = get(tangent_planes_, v);
+    on_face_without_area_[i] = planes_of_face_without_area(planes, scratch);
+    if(on_face_without_area_[i])
+      return; // it stays: no projection needed
+    Quadric quadric;
+    quadric.add_planes(planes);
+    projection_[i] = Quadric_projection(decomposition_of(tangent_planes_, v, quadric), quadric_truncation);
+    first_unit_plane_[i] = unit_planes_.size();
+    for(const auto& plane : planes)
+      unit_planes_.emplace_back(plane.first, normalized(plane.second));
+    end_unit_plane_[i] = unit_planes_.size();
+    if(!planes.empty())
+      planes_box_[i] = points_box(planes);
   }
 
   // The neighbours each vertex is averaged with, by index, in flat arrays walked at
@@ -435,6 +425,9 @@ private:
   std::vector<std::pair<Vec3, Vec3>> planes_box_;
   std::vector<vertex_descriptor> vertex_order_;
   std::vector<std::size_t> first_neighbour_, neighbours_;
+  std::vector<vertex_descriptor> vertex_of_; // by index, for the untangling
+  std::vector<std::uint8_t> prepared_;
+  std::vector<Vec3> scratch_;
 };
 
 } // namespace internal
