@@ -692,6 +692,12 @@ endif()
 run(2 timed.off --time-limit 1e-9 ${elephant} timed.off)
 expect_message("time limit of 1e-09 s was reached" "--time-limit")
 run(2 NONE --time-limit 0 ${elephant} timed.off)
+# ... also in the untangling stage: a coarse faceted sphere under a heavy normal weight
+# gives a dual with a quarter of its quads folded, which the stage works on for
+# seconds (it did not report progress: the limit passed, exit 0 after 17 s)
+run(2 tangled.off --time-limit 0.5 --map position-normal --normal-weight 3 --cell-size 0.086 --relax 1
+    ${DATA_DIR}/tangled_dual.ply tangled.off)
+expect_message("time limit of 0.5 s was reached" "--time-limit in the untangling")
 # Ctrl-C (SIGINT) during a run of about a second: cancelled cleanly, exit 130, one
 # line, no file (a signal during the reading cancels at the remesh's first report)
 execute_process(COMMAND timeout --preserve-status -s INT 0.3 ${CLI} --cell-size 0.003

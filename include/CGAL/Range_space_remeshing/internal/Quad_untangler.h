@@ -16,6 +16,7 @@
 // makes no face of it worse in shape.
 
 #include <CGAL/Range_space_remeshing/internal/Face_corners.h>
+#include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Vec3.h>
 
 #include <algorithm>
@@ -77,8 +78,11 @@ public:
   /// Rounds over the vertices of the tangled faces, in index order, until none is
   /// left, or a round moves nothing even with the vertices around them. Returns the
   /// faces still tangled; `moves` and `rounds` count what was done.
-  std::vector<std::size_t> run(std::vector<std::size_t> tangled, std::size_t& moves, std::size_t& rounds)
+  /// The visitor hears from every `Progress::interval`-th vertex tried, and can cancel.
+  std::vector<std::size_t> run(std::vector<std::size_t> tangled, std::size_t& moves, std::size_t& rounds,
+                               const Progress& progress)
   {
+    std::size_t tried = 0;
     bool with_ring = false;
     std::vector<std::size_t> touched;
     for(rounds = 0; !tangled.empty() && rounds < std::size_t(maximum_rounds); ++rounds) {
@@ -87,6 +91,7 @@ public:
       for(std::size_t i : vertices_to_move(tangled, with_ring)) {
         if(stuck_[i])
           continue;
+        progress.report_at_every(Remeshing_stage::RELAXATION, tried++, double(rounds) / maximum_rounds);
         if(!improve_vertex(i)) {
           stuck_[i] = 1;
           continue;
