@@ -111,7 +111,8 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                    {"folded_after", all.untangle.folded_after},
                    {"non_convex_after", all.untangle.non_convex_after},
                    {"moves", all.untangle.moves},
-                   {"rounds", all.untangle.rounds}};
+                   {"rounds", all.untangle.rounds},
+                   {"tries", all.untangle.tries}};
   j["cell_size_used"] = s.cell_size;
   j["input_repairs"] = {{"repaired", repairs.repaired()},
                         {"merged_points", repairs.merged_points},

@@ -196,6 +196,8 @@ struct Untangle_statistics
   std::size_t moves = 0;
   /// rounds over the vertices of the faces still folded or non-convex
   std::size_t rounds = 0;
+  /// vertices tried: for each, a search of places on its tangent planes
+  std::size_t tries = 0;
   double time_ms = 0;
 };
 

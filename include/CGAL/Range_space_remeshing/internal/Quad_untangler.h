@@ -46,7 +46,14 @@ public:
   // rises for sure, so the rounds are bounded. Where vertices are held on crease lines
   // a fold can take tens of rounds of small moves to open.
   static constexpr int maximum_rounds = 200;
-
+  // Rounds without fewer tangled faces than ever before, after which the corners
+  // alone count as stuck (the vertices around them move too), and then the stage
+  // stops: small moves can go on for a hundred rounds and untangle nothing.
+  static constexpr int patience = 8;
+  // Vertices tried in all, per vertex of the mesh: where a large part of the mesh is
+  // tangled (the cause is then upstream: a map much finer than the input's facets)
+  // the stage stops at a cost of a few relaxation steps instead of searching on.
+  static constexpr std::size_t tries_per_vertex = 1;
 
   Quad_untangler(const Face_corners& fc, std::vector<Vec3>& position, const std::vector<Vec3>& normal, Place place)
     : fc_(fc), position_(position), normal_(normal), place_(place), stuck_(fc.first_face.size() - 1, 0)
@@ -76,44 +83,65 @@ public:
   }
 
   /// Rounds over the vertices of the tangled faces, in index order, until none is
-  /// left, or a round moves nothing even with the vertices around them. Returns the
-  /// faces still tangled; `moves` and `rounds` count what was done.
+  /// left, or the rounds stop reducing their number even with the vertices around
+  /// them, or the tries reach their budget. Returns the faces still tangled; `moves`,
+  /// `rounds` and `tried` count what was done.
   /// The visitor hears from every `Progress::interval`-th vertex tried, and can cancel.
   std::vector<std::size_t> run(std::vector<std::size_t> tangled, std::size_t& moves, std::size_t& rounds,
-                               const Progress& progress)
+                               std::size_t& tried, const Progress& progress)
   {
-    std::size_t tried = 0;
+    const std::size_t budget = tries_per_vertex * (fc_.first_face.size() - 1);
+    std::size_t fewest = tangled.size(), rounds_since_fewer = 0;
     bool with_ring = false;
     std::vector<std::size_t> touched;
-    for(rounds = 0; !tangled.empty() && rounds < std::size_t(maximum_rounds); ++rounds) {
+    for(rounds = 0; !tangled.empty() && rounds < std::size_t(maximum_rounds) && tried < budget; ++rounds) {
       touched = tangled;
-      std::size_t moved = 0;
-      for(std::size_t i : vertices_to_move(tangled, with_ring)) {
-        if(stuck_[i])
-          continue;
-        progress.report_at_every(Remeshing_stage::RELAXATION, tried++, double(rounds) / maximum_rounds);
-        if(!improve_vertex(i)) {
-          stuck_[i] = 1;
-          continue;
-        }
-        ++moved;
-        touched.insert(touched.end(), incident(i).begin(), incident(i).end());
-        for(std::size_t k : incident(i))
-          for(std::size_t j : corners(k))
-            stuck_[j] = 0;
-      }
+      const std::size_t moved = move_round(tangled, with_ring, budget, tried, touched, progress);
       moves += moved;
       tangled = still_tangled(touched);
-      if(moved == 0) {
+      if(tangled.size() < fewest) {
+        fewest = tangled.size();
+        rounds_since_fewer = 0;
+      } else {
+        ++rounds_since_fewer;
+      }
+      if(moved == 0 || rounds_since_fewer >= std::size_t(patience)) {
         if(with_ring)
           break;
         with_ring = true; // the corners alone are stuck: free them by moving their neighbours
+        rounds_since_fewer = 0;
       }
     }
     return tangled;
   }
 
 private:
+  // One round: each vertex to move, not stuck, tried once (until the budget is
+  // spent); the faces around those that moved join `touched`. Returns the moves.
+  std::size_t move_round(const std::vector<std::size_t>& tangled, bool with_ring, std::size_t budget,
+                         std::size_t& tried, std::vector<std::size_t>& touched, const Progress& progress)
+  {
+    std::size_t moved = 0;
+    for(std::size_t i : vertices_to_move(tangled, with_ring)) {
+      if(stuck_[i])
+        continue;
+      if(tried == budget)
+        break;
+      progress.report_at_every(Remeshing_stage::RELAXATION, tried, double(tried) / double(budget));
+      ++tried;
+      if(!improve_vertex(i)) {
+        stuck_[i] = 1;
+        continue;
+      }
+      ++moved;
+      touched.insert(touched.end(), incident(i).begin(), incident(i).end());
+      for(std::size_t k : incident(i))
+        for(std::size_t j : corners(k))
+          stuck_[j] = 0;
+    }
+    return moved;
+  }
+
   struct Range
   {
     const std::size_t *b, *e;

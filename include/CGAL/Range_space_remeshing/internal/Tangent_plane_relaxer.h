@@ -175,7 +175,7 @@ public:
       find_border();
       start_projections();
       vertex_of_index();
-      tangled = untangler.run(tangled, stats.moves, stats.rounds, progress_);
+      tangled = untangler.run(tangled, stats.moves, stats.rounds, stats.tries, progress_);
       const Face_shape_counts after = untangler.count(tangled);
       stats.folded_after = after.folded;
       stats.non_convex_after = after.non_convex;
