@@ -277,18 +277,29 @@ private:
   /// the common case, a face in a cell or two, 40 % more.
   static constexpr std::size_t searched_cells = 16;
 
-  static void add_once(std::vector<Levels>& cells, const Levels& c)
+  /// Appends x to the part of `list` from `from` on, where not there yet (for cells,
+  /// their levels or their ids); a long part may hold repeats until `remove_repeats()`.
+  template <class T>
+  static void add_once(std::vector<T>& list, const T& x, std::size_t from = 0)
   {
-    if(cells.size() > searched_cells || std::find(cells.begin(), cells.end(), c) == cells.end())
-      cells.push_back(c);
+    if(list.size() - from > searched_cells || std::find(list.begin() + from, list.end(), x) == list.end())
+      list.push_back(x);
   }
 
-  static void remove_repeats(std::vector<Levels>& cells)
+  template <class T>
+  static void add_each_once(const T* begin, const T* end, std::vector<T>& list, std::size_t from)
   {
-    if(cells.size() <= searched_cells)
+    for(; begin != end; ++begin)
+      add_once(list, *begin, from);
+  }
+
+  template <class T>
+  static void remove_repeats(std::vector<T>& list, std::size_t from = 0)
+  {
+    if(list.size() - from <= searched_cells)
       return;
-    std::sort(cells.begin(), cells.end());
-    cells.erase(std::unique(cells.begin(), cells.end()), cells.end());
+    std::sort(list.begin() + from, list.end());
+    list.erase(std::unique(list.begin() + from, list.end()), list.end());
   }
 
   /// Adds the cells the open edge from vertex a to vertex b meets, but for its ends';
@@ -491,24 +502,6 @@ private:
     return 0;
   }
 
-  /// Appends the ids of list [begin, end) to `ids` where not there yet; a long list
-  /// may hold repeats until `remove_repeated_ids(ids, from)`, as with cells above.
-  static void add_ids_once(const std::uint32_t* begin, const std::uint32_t* end, std::vector<std::uint32_t>& ids,
-                           std::size_t from)
-  {
-    for(; begin != end; ++begin)
-      if(ids.size() - from > searched_cells || std::find(ids.begin() + from, ids.end(), *begin) == ids.end())
-        ids.push_back(*begin);
-  }
-
-  static void remove_repeated_ids(std::vector<std::uint32_t>& ids, std::size_t from)
-  {
-    if(ids.size() - from <= searched_cells)
-      return;
-    std::sort(ids.begin() + from, ids.end());
-    ids.erase(std::unique(ids.begin() + from, ids.end()), ids.end());
-  }
-
   const std::uint32_t* crossings_begin(std::size_t slot) const { return crossing_cells_.data() + crossing_start_[slot]; }
   const std::uint32_t* crossings_end(std::size_t slot) const { return crossing_cells_.data() + crossing_start_[slot + 1]; }
 
@@ -537,16 +530,16 @@ private:
         continue;
       }
       for(std::uint32_t v : corners)
-        add_ids_once(&vertex_cell_[v], &vertex_cell_[v] + 1, face_cells_, from);
+        add_once(face_cells_, vertex_cell_[v], from);
       for(int e = 0; e < 3; ++e) {
         const std::size_t slot = crossing_slot(f, e);
-        add_ids_once(crossings_begin(slot), crossings_end(slot), face_cells_, from);
+        add_each_once(crossings_begin(slot), crossings_end(slot), face_cells_, from);
       }
       for_each_cell_around_vertices_of(f, [&](const Levels& c) {
         const std::uint32_t id = cell_index_.id_of(c);
-        add_ids_once(&id, &id + 1, face_cells_, from);
+        add_once(face_cells_, id, from);
       });
-      remove_repeated_ids(face_cells_, from);
+      remove_repeats(face_cells_, from);
     }
     face_start_.back() = std::uint32_t(face_cells_.size());
   }
@@ -577,10 +570,10 @@ private:
         if(owns_edge(f, e)) {
           edge_cells.clear();
           const std::uint32_t a = vertex_cell_[corners[e]], b = vertex_cell_[corners[(e + 1) % 3]];
-          add_ids_once(&a, &a + 1, edge_cells, 0);
-          add_ids_once(&b, &b + 1, edge_cells, 0);
-          add_ids_once(crossings_begin(3 * std::size_t(f) + e), crossings_end(3 * std::size_t(f) + e), edge_cells, 0);
-          remove_repeated_ids(edge_cells, 0);
+          add_once(edge_cells, a);
+          add_once(edge_cells, b);
+          add_each_once(crossings_begin(3 * std::size_t(f) + e), crossings_end(3 * std::size_t(f) + e), edge_cells, 0);
+          remove_repeats(edge_cells);
           for(std::uint32_t id : edge_cells)
             --excess[id];
         }
