@@ -201,6 +201,17 @@ struct Untangle_statistics
   double time_ms = 0;
 };
 
+/// What `insert_crease_triangles()` did.
+struct Crease_statistics
+{
+  /// edges taken as creases
+  std::size_t feature_edges = 0;
+  /// vertices on creases, duplicated once per smooth sector around them
+  std::size_t added_vertices = 0;
+  /// zero-area triangles along the creases and at their corners
+  std::size_t crease_triangles = 0;
+};
+
 } // namespace Range_space_remeshing
 } // namespace CGAL
 

@@ -8,22 +8,17 @@
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
 #include <CGAL/Range_space_remeshing/parameters.h>
+#include <CGAL/Range_space_remeshing/internal/Hilbert_face_order.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
-#include <CGAL/hilbert_sort.h>
 #include <CGAL/property_map.h>
 
-#include <cmath>
 #include <cstddef>
-#include <numeric>
-#include <string>
 #include <type_traits>
 #include <vector>
 
@@ -41,11 +36,9 @@ and points.
 Why: the remeshers walk from face to neighbouring face, and read each face and vertex
 where the input's numbering puts it. Files often store their faces in the order a
 modeller or a refinement made them, scattered over memory for a walk on the surface;
-on four of CGAL's sample meshes, the primal contouring of the copy ran 1.2 to 2.3
-times faster (man's file, in such an order already, gained nothing), and a deforming
-mesh remeshed frame after frame got 1.1 to 2.7 times the frames per second (see the
-manual's Performance section). The copy costs about as much as several remeshes, so
-it pays for a mesh remeshed many times, or stored once in this order.
+the contouring of the copy is then faster, and a deforming mesh remeshed frame after
+frame gets more frames per second (benchmark/RESULTS.md says by how much). The copy costs about as much as several
+remeshes, so it pays for a mesh remeshed many times, or stored once in this order.
 
 Elements are appended to `out` (as `CGAL::copy_face_graph()` does); properties other
 than the points are not copied: the maps of `np_in` tell where each element went, to
@@ -104,7 +97,6 @@ void copy_in_spatial_order(const PolygonMesh& tm, PolygonMeshOut& out,
   using out_face = typename boost::graph_traits<PolygonMeshOut>::face_descriptor;
   using Out_point = typename boost::property_traits<
       typename GetVertexPointMap<PolygonMeshOut, NamedParametersOut>::type>::value_type;
-  using Sorting_kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
   internal::refuse_same_mesh(tm, out, "copy_in_spatial_order()");
   using In_point = typename boost::property_traits<
       typename GetVertexPointMap<PolygonMesh, NamedParametersIn>::const_type>::value_type;
@@ -130,31 +122,6 @@ void copy_in_spatial_order(const PolygonMesh& tm, PolygonMeshOut& out,
       return Out_point(p[0], p[1], p[2]);
     }
   };
-  // The centroids in double precision: they only order the faces.
-  std::vector<face_descriptor> input_faces;
-  std::vector<Sorting_kernel::Point_3> centroids;
-  for(face_descriptor f : faces(tm)) {
-    internal::Vec3 sum = {{0, 0, 0}};
-    double corners = 0;
-    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
-      const internal::Vec3 p = internal::to_vec3(get(vpm, v));
-      for(int d = 0; d < 3; ++d)
-        sum[d] += p[d];
-      ++corners;
-    }
-    // a NaN would break the sort's ordering (undefined behaviour), an infinity its subdivision
-    if(!(std::isfinite(sum[0]) && std::isfinite(sum[1]) && std::isfinite(sum[2])))
-      throw Remeshing_error("copy_in_spatial_order: a corner of input face " + std::to_string(input_faces.size()) +
-                            " (in the order of faces(tm)) has a NaN or infinite coordinate");
-    input_faces.push_back(f);
-    centroids.emplace_back(sum[0] / corners, sum[1] / corners, sum[2] / corners);
-  }
-  std::vector<std::size_t> order(input_faces.size());
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  const auto centroid_of = CGAL::make_property_map(centroids);
-  CGAL::hilbert_sort(order.begin(), order.end(),
-                     CGAL::Spatial_sort_traits_adapter_3<Sorting_kernel, decltype(centroid_of)>(centroid_of));
-
   const out_vertex not_copied = boost::graph_traits<PolygonMeshOut>::null_vertex();
   std::vector<out_vertex> copy_of(internal::index_bound(vertices(tm), vertex_index), not_copied);
   // the copy of v, made on its first use
@@ -168,8 +135,7 @@ void copy_in_spatial_order(const PolygonMesh& tm, PolygonMeshOut& out,
     return w;
   };
   std::vector<out_vertex> corners;
-  for(std::size_t k : order) {
-    const face_descriptor f = input_faces[k];
+  for(face_descriptor f : internal::faces_in_hilbert_order(tm, vpm)) {
     corners.clear();
     for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, tm), tm))
       corners.push_back(copy_vertex(v));

@@ -364,6 +364,51 @@ std::unique_ptr<Primal_complex> trace_primal_complex(const TriangleMesh& tm, Tra
   return complex;
 }
 
+// What a run reads of `np_in` besides the maps, checked.
+struct Primal_run_options
+{
+  bool seeded, preserve, check;
+  std::size_t maximum_vertices;
+};
+
+template <class NamedParametersIn>
+Primal_run_options primal_run_options(const NamedParametersIn& np_in)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Primal_run_options options;
+  options.seeded = choose_parameter(get_parameter(np_in, CGAL::internal_np::seeding_method),
+                                    Seeding_method::COMPLETE_SCAN) == Seeding_method::SEEDED;
+  options.preserve = choose_parameter(get_parameter(np_in, internal_np::preserve_topology), false);
+  options.check = options.preserve || choose_parameter(get_parameter(np_in, internal_np::check_topology), false);
+  options.maximum_vertices = maximum_vertices_of(np_in);
+  if(options.preserve && options.seeded)
+    throw Remeshing_error("preserve_topology needs the complete scan (Seeding_method::COMPLETE_SCAN)",
+                          Remeshing_error::Kind::BAD_PARAMETER);
+  return options;
+}
+
+template <class Point_d>
+void check_grid(double cell_size, const Point_d& origin)
+{
+  if(!(cell_size > 0) || !std::isfinite(cell_size))
+    throw Remeshing_error("the cell size must be a positive finite number", Remeshing_error::Kind::BAD_PARAMETER);
+  for(double x : origin)
+    if(!std::isfinite(x))
+      throw Remeshing_error("the grid origin must be finite", Remeshing_error::Kind::BAD_PARAMETER);
+}
+
+// An error of a refined run, past the first: the refinement could not finish.
+inline Remeshing_error refinement_failure(const Remeshing_error& error, std::size_t refinements, double h)
+{
+  if(refinements == 0 || error.kind() == Remeshing_error::Kind::CANCELLED)
+    return error;
+  return Remeshing_error("preserve_topology could not reach a cell size without topology defects (" +
+                             std::to_string(refinements) + " refinements, to cell size " + std::to_string(h) +
+                             "): " + error.what(),
+                         Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
+}
+
 // The whole run at cell size `cell_size`, on a mesh with faces (the callers check);
 // `inspect(tracer, complex)` sees the intermediate structures before the output is
 // written (tests check the invariants there).
@@ -402,22 +447,8 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
   using Point_d = typename Traits::Point_d;
 
   const Point_d origin = choose_parameter(get_parameter(np_in, internal_np::grid_origin), Point_d{});
-  const Seeding_method seeding = choose_parameter(
-      get_parameter(np_in, CGAL::internal_np::seeding_method), Seeding_method::COMPLETE_SCAN);
-  const std::size_t maximum_vertices = maximum_vertices_of(np_in);
-
-  if(!(cell_size > 0) || !std::isfinite(cell_size))
-    throw Remeshing_error("the cell size must be a positive finite number", Remeshing_error::Kind::BAD_PARAMETER);
-  for(double x : origin)
-    if(!std::isfinite(x))
-      throw Remeshing_error("the grid origin must be finite", Remeshing_error::Kind::BAD_PARAMETER);
-
-  const bool preserve = choose_parameter(get_parameter(np_in, internal_np::preserve_topology), false);
-  const bool check = preserve || choose_parameter(get_parameter(np_in, internal_np::check_topology), false);
-  const bool seeded = (seeding == Seeding_method::SEEDED);
-  if(preserve && seeded)
-    throw Remeshing_error("preserve_topology needs the complete scan (Seeding_method::COMPLETE_SCAN)",
-                          Remeshing_error::Kind::BAD_PARAMETER);
+  check_grid(cell_size, origin);
+  const Primal_run_options options = primal_run_options(np_in);
   const auto visitor =
       choose_parameter(get_parameter(np_in, internal_np::topology_visitor), No_topology_visitor());
 
@@ -431,21 +462,21 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
   for(std::size_t refinements = 0;; ++refinements) {
     start = std::chrono::steady_clock::now();
     try {
-      Tracer tracer(tm, range_map, face_index, vertex_index, origin, h, maximum_vertices, traits);
+      Tracer tracer(tm, range_map, face_index, vertex_index, origin, h, options.maximum_vertices, traits);
       tracer.set_progress(progress);
       Statistics stats;
       stats.cell_size = h;
       stats.topology_refinements = refinements;
       const std::unique_ptr<Primal_complex> complex =
-          trace_primal_complex(tm, tracer, np_in, seeded, check, std::integral_constant<bool, parallel>(),
+          trace_primal_complex(tm, tracer, np_in, options.seeded, options.check, std::integral_constant<bool, parallel>(),
                                stats, start);
 
       std::vector<Topology_defect<face_descriptor>> defects;
-      if(check && !seeded) {
+      if(options.check && !options.seeded) {
         defects = Topology_check<Tracer, face_descriptor>(tracer, *complex).run(stats, progress);
         stats.time_topology_ms = milliseconds_since(start);
       }
-      if(preserve && !stats.topology_preserved()) {
+      if(options.preserve && !stats.topology_preserved()) {
         if(refinements == maximum_topology_refinements)
           throw Remeshing_error("defects remain at every cell size tried",
                                 Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
@@ -464,12 +495,7 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_total).count();
       return stats;
     } catch(const Remeshing_error& error) {
-      if(refinements == 0 || error.kind() == Remeshing_error::Kind::CANCELLED)
-        throw;
-      throw Remeshing_error("preserve_topology could not reach a cell size without topology defects (" +
-                            std::to_string(refinements) + " refinements, to cell size " + std::to_string(h) +
-                            "): " + error.what(),
-                            Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
+      throw refinement_failure(error, refinements, h);
     }
   }
 }
