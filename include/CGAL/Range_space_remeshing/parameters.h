@@ -89,6 +89,7 @@ enum progress_visitor_t { progress_visitor };
   P(internal_np, dual_placement_t, dual_placement)                                       \
   P(internal_np, vertex_tangent_planes_map_t, vertex_tangent_planes_map)                 \
   P(internal_np, vertex_crease_normal_map_t, vertex_crease_normal_map)                   \
+  P(internal_np, vertex_attribute_maps_t, vertex_attribute_maps)                         \
   P(internal_np, quad_collapse_t, quad_collapse)                                         \
   P(internal_np, number_of_collapse_passes_t, number_of_collapse_passes)                 \
   P(internal_np, number_of_target_vertices_t, number_of_target_vertices)                 \

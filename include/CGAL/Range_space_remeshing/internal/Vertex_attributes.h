@@ -217,7 +217,7 @@ std::tuple<Map> as_tuple_of_maps(const Map& map)
   return std::tuple<Map>(map);
 }
 template <class... Maps>
-const std::tuple<Maps...>& as_tuple_of_maps(const std::tuple<Maps...>& maps)
+std::tuple<Maps...> as_tuple_of_maps(const std::tuple<Maps...>& maps)
 {
   return maps;
 }
@@ -253,8 +253,9 @@ auto pairs_of_attribute_maps(const NamedParametersIn& np_in, const NamedParamete
                is_default_parameter<NamedParametersOut, Tag>::value)
     return std::tuple<>();
   else {
-    const auto& sources = as_tuple_of_maps(get_parameter(np_in, internal_np::vertex_attribute_maps));
-    const auto& destinations = as_tuple_of_maps(get_parameter(np_out, internal_np::vertex_attribute_maps));
+    // copies: get_parameter() returns the maps by value
+    const auto sources = as_tuple_of_maps(get_parameter(np_in, internal_np::vertex_attribute_maps));
+    const auto destinations = as_tuple_of_maps(get_parameter(np_out, internal_np::vertex_attribute_maps));
     constexpr std::size_t n = std::tuple_size<std::decay_t<decltype(sources)>>::value;
     static_assert(n == std::tuple_size<std::decay_t<decltype(destinations)>>::value,
                   "vertex_attribute_maps: the input and the output must give as many maps");
