@@ -233,7 +233,8 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
         else
           corner_normals[c] = input_normals(corner);
       }
-      attribute_sources[c] = {corner, w[c]};
+      if constexpr(!Attributes::empty)
+        attribute_sources[c] = {corner, w[c]};
       ++c;
     }
     const out_vertex ov = add_vertex(out);

@@ -306,7 +306,6 @@ auto add_number_maps(Mesh& mesh, const Vertex_attributes<Pairs...>& attributes)
   return add_number_maps(mesh, attributes, std::index_sequence_for<Pairs...>());
 }
 
-
 template <class Middle, class... Pairs, std::size_t... I>
 auto split_attributes(const Vertex_attributes<Pairs...>& attributes, const Middle& middle, std::index_sequence<I...>)
 {
@@ -324,7 +323,6 @@ auto split_attributes(const Vertex_attributes<Pairs...>& attributes, const Middl
 {
   return split_attributes(attributes, middle, std::index_sequence_for<Pairs...>());
 }
-
 
 } // namespace internal
 } // namespace Range_space_remeshing
