@@ -793,6 +793,81 @@ else()
   endif()
 endif()
 
+# ------------------------------------------------------------------ texture coordinates
+# An octahedron whose UVs are its x and y: at a primal vertex both are mixed with the
+# same barycentric weights in the same order, so each "vt" line must repeat the first
+# two numbers of its "v" line, character for character.
+set(octahedron_v "v 1.1 0 0\nv -1.1 0 0\nv 0 0.9 0\nv 0 -0.9 0\nv 0 0 1.3\nv 0 0 -1.3\n")
+set(octahedron_vt "vt 1.1 0\nvt -1.1 0\nvt 0 0.9\nvt 0 -0.9\nvt 0 0\nvt 0 0\n")
+set(octahedron_f "f 1/1 3/3 5/5\nf 3/3 2/2 5/5\nf 2/2 4/4 5/5\nf 4/4 1/1 5/5\n"
+                 "f 3/3 1/1 6/6\nf 2/2 3/3 6/6\nf 4/4 2/2 6/6\nf 1/1 4/4 6/6\n")
+file(WRITE ${WORK_DIR}/uv.obj "${octahedron_v}${octahedron_vt}${octahedron_f}")
+run(0 uv_primal.obj --stats --output primal --cell-size 0.05 uv.obj uv_primal.obj)
+expect_json(ON texture_coordinates carried)
+file(STRINGS ${WORK_DIR}/uv_primal.obj uv_v REGEX "^v ")
+file(STRINGS ${WORK_DIR}/uv_primal.obj uv_vt REGEX "^vt ")
+list(LENGTH uv_v number_of_v)
+list(LENGTH uv_vt number_of_vt)
+set(uv_mismatches 0)
+if(number_of_v EQUAL number_of_vt)
+  foreach(i RANGE 1 ${number_of_v})
+    math(EXPR k "${i} - 1")
+    list(GET uv_v ${k} v_line)
+    list(GET uv_vt ${k} vt_line)
+    string(REGEX REPLACE "^v ([^ ]+ [^ ]+) [^ ]+$" "\\1" v_xy "${v_line}")
+    string(REGEX REPLACE "^vt " "" vt_uv "${vt_line}")
+    if(NOT v_xy STREQUAL vt_uv)
+      math(EXPR uv_mismatches "${uv_mismatches} + 1")
+    endif()
+  endforeach()
+endif()
+if(number_of_v LESS 100 OR NOT number_of_v EQUAL number_of_vt OR uv_mismatches GREATER 0)
+  message(SEND_ERROR "OBJ texture coordinates: ${number_of_v} v, ${number_of_vt} vt, ${uv_mismatches} "
+                     "vt not the x y of their v")
+  math(EXPR failures "${failures} + 1")
+endif()
+# the output read back (vt, f a/a), and the dual to PLY as s t
+run(0 uv_dual.ply --stats --ascii uv_primal.obj uv_dual.ply)
+expect_json(ON texture_coordinates carried)
+file(STRINGS ${WORK_DIR}/uv_dual.ply uv_st REGEX "^property double [st]$")
+# PLY texture_u texture_v in, read back from the program's PLY
+string(REPLACE "vt " "" octahedron_uv "${octahedron_vt}")
+string(REPLACE "\n" ";" octahedron_points "${octahedron_v}")
+string(REPLACE "\n" ";" octahedron_uvs "${octahedron_uv}")
+set(ply_body "")
+foreach(i RANGE 0 5)
+  list(GET octahedron_points ${i} point)
+  list(GET octahedron_uvs ${i} uv)
+  string(REGEX REPLACE "^v " "" point "${point}")
+  string(APPEND ply_body "${point} ${uv}\n")
+endforeach()
+file(WRITE ${WORK_DIR}/uv.ply "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+     "property float z\nproperty float texture_u\nproperty float texture_v\nelement face 8\n"
+     "property list uchar int vertex_indices\nend_header\n${ply_body}"
+     "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n")
+run(0 uv_from_ply.obj --stats --cell-size 0.05 uv.ply uv_from_ply.obj)
+expect_json(ON texture_coordinates carried)
+run(0 uv_again.off --stats uv_dual.ply uv_again.off)
+expect_json(ON texture_coordinates carried)
+list(LENGTH uv_st number_of_st)
+if(NOT number_of_st EQUAL 2)
+  message(SEND_ERROR "PLY texture coordinates: the output has ${number_of_st} of the properties s t")
+  math(EXPR failures "${failures} + 1")
+endif()
+# a seam: vertex 5 has two texture coordinates; the UVs are dropped, with one line
+file(WRITE ${WORK_DIR}/uv_seam.obj "${octahedron_v}${octahedron_vt}vt 0.5 0.5\n"
+     "f 1/1 3/3 5/7\nf 3/3 2/2 5/5\nf 2/2 4/4 5/5\nf 4/4 1/1 5/5\n"
+     "f 3/3 1/1 6/6\nf 2/2 3/3 6/6\nf 4/4 2/2 6/6\nf 1/1 4/4 6/6\n")
+run(0 uv_seam_out.obj --stats --cell-size 0.05 uv_seam.obj uv_seam_out.obj)
+expect_json(OFF texture_coordinates carried)
+expect_json(1 texture_coordinates seam_vertices)
+file(STRINGS ${WORK_DIR}/uv_seam_out.obj seam_vt REGEX "^vt ")
+if(NOT err MATCHES "^range_space_remesh: 'uv_seam.obj': 1 vertex has several texture coordinates[^\n]*\n$"
+   OR seam_vt)
+  message(SEND_ERROR "OBJ seam: expected one line on stderr and no vt, got: ${err}")
+  math(EXPR failures "${failures} + 1")
+endif()
+
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} command-line check(s) failed")
 endif()

@@ -21,6 +21,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace {
@@ -349,11 +350,53 @@ void test_written_files_read_back()
 
 } // namespace
 
+/// Texture coordinates: written (OBJ vt, PLY s t, text and binary) and read back by the
+/// program's reader exactly, vertex by vertex; the reader's names and seams.
+void test_texture_coordinates()
+{
+  Mesh sphere = make_sphere(1.0, 2);
+  auto uvs = sphere.add_property_map<Mesh::Vertex_index, K::Point_2>("v:uv").first;
+  for(auto v : vertices(sphere))
+    uvs[v] = K::Point_2(std::atan2(sphere.point(v).y(), sphere.point(v).x()), sphere.point(v).z() / 3);
+  for(const auto& [path, binary] : {std::pair<std::string, bool>{"uv.obj", false}, {"uv.ply", false}, {"uvb.ply", true}}) {
+    {
+      rsr_io::Output_files files;
+      files.add(sphere, path, static_cast<const Color_map*>(nullptr), rsr_io::Write_options{binary, 17}, &uvs);
+      files.commit();
+    }
+    const rsr_io::Polygon_soup back = rsr_io::read_mesh_file(path);
+    std::size_t same = 0;
+    auto v = vertices(sphere).begin();
+    for(std::size_t i = 0; i < back.uvs.size() && v != vertices(sphere).end(); ++i, ++v)
+      same += back.uvs[i][0] == uvs[*v].x() && back.uvs[i][1] == uvs[*v].y();
+    std::cout << path << ": " << back.uvs.size() << " texture coordinates, " << same << " read back exactly"
+              << std::endl;
+    CHECK_EQ(same, num_vertices(sphere));
+    CHECK_EQ(back.uv_seam_points, std::size_t(0));
+    std::remove(path.c_str());
+  }
+  const std::string ply_uv = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nproperty float u\nproperty float v\nelement face 1\n"
+                             "property list uchar int vertex_indices\nend_header\n"
+                             "0 0 0 0.25 0.5\n1 0 0 0.75 0.5\n0 1 0 0.25 1\n3 0 1 2\n";
+  const auto from_ply = parse(ply_uv, "ply");
+  CHECK(from_ply.uvs.size() == 3 && from_ply.uvs[1][0] == 0.75 && from_ply.uvs[2][1] == 1);
+  // an OBJ seam: point 1 has two texture coordinates; a corner without one: no UVs
+  const std::string obj_v = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\nvt 0.5 0.5\n";
+  const auto seam = parse(obj_v + "f 1/1 2/2 3/3\nf 2/5 4/4 3/3\n", "obj");
+  CHECK(seam.uvs.empty() && seam.uv_seam_points == 1);
+  const auto partial = parse(obj_v + "f 1/1 2/2 3/3\nf 2 4 3\n", "obj");
+  CHECK(partial.uvs.empty() && partial.uv_seam_points == 0);
+  const auto relative = parse(obj_v + "f 1/-5 2/-4 3/-3\nf 2/-4 4/-2 3/-3\n", "obj");
+  CHECK(relative.uvs.size() == 4 && relative.uvs[3][0] == 1 && relative.uvs[3][1] == 1);
+}
+
 int main()
 {
   test_formats_agree();
   test_bombs_are_refused_before_allocation();
   test_repairs_are_counted();
   test_written_files_read_back();
+  test_texture_coordinates();
   return report("test_file_io");
 }

@@ -3,7 +3,7 @@
 //
 // range_space_remesh: INPUT, from the file to the mesh the remesh reads. The reader
 // (mesh_file_reader.h) gives a polygon soup, prepare_input() repairs and triangulates
-// it (or refuses it with --strict), the vertex colours follow, and --sharp-angle
+// it (or refuses it with --strict), the vertex colours and UVs follow, and --sharp-angle
 // opens the creases; one line on stderr says what the repair changed.
 
 #ifndef RANGE_SPACE_REMESHING_TOOLS_INPUT_H
@@ -20,9 +20,12 @@
 #include <array>
 #include <chrono>
 #include <cstddef>
+#include <algorithm>
+#include <cstdint>
 #include <functional>
 #include <iostream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -38,41 +41,87 @@ struct Input
   Mesh mesh;
   RSR::Input_repair_statistics repairs;
   double read_ms = 0, repair_ms = 0;
+  std::size_t uv_seam_vertices = 0; // vertices with several UVs: the UVs were dropped
 };
 
-/// Gives the vertices of `mesh` the colours of the soup's points at their positions:
-/// the repair only merges points that coincide and copies points, so each vertex
-/// sits where some point of the file is (the first point there gives the colour).
-inline void add_colors_by_position(const rsr_io::Polygon_soup& soup, Mesh& mesh)
+using Position = std::array<double, 3>;
+struct Position_hash
 {
-  using Position = std::array<double, 3>;
-  struct Hash
+  std::size_t operator()(const Position& p) const
   {
-    std::size_t operator()(const Position& p) const
-    {
-      std::size_t h = 0;
-      for(double x : p)
-        h = h * 1000003u ^ std::hash<double>()(x);
-      return h;
-    }
-  };
-  std::unordered_map<Position, std::size_t, Hash> point_at;
+    std::size_t h = 0;
+    for(double x : p)
+      h = h * 1000003u ^ std::hash<double>()(x);
+    return h;
+  }
+};
+/// The first point of the soup at each position.
+using Point_at = std::unordered_map<Position, std::size_t, Position_hash>;
+
+inline Point_at first_point_at_each_position(const rsr_io::Polygon_soup& soup)
+{
+  Point_at point_at;
   point_at.reserve(soup.points.size());
   for(std::size_t i = 0; i < soup.points.size(); ++i)
     point_at.emplace(soup.points[i], i);
-  auto colors = mesh.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
+  return point_at;
+}
+
+/// Gives each vertex of `mesh` the value `value_of(i)` of the soup's point i at its
+/// position: the repair only merges points that coincide and copies points, so each
+/// vertex sits where some point of the file is (the first point there gives the value).
+template <class T, class ValueOf>
+void add_values_by_position(const Point_at& point_at, const ValueOf& value_of, const std::string& name, Mesh& mesh)
+{
+  auto values = mesh.add_property_map<Mesh::Vertex_index, T>(name).first;
   for(auto v : vertices(mesh)) {
     const auto& p = mesh.point(v);
     const auto found = point_at.find({{p.x(), p.y(), p.z()}});
-    if(found != point_at.end()) {
-      const auto& c = soup.colors[found->second];
-      colors[v] = CGAL::IO::Color(c[0], c[1], c[2]);
-    }
+    if(found != point_at.end())
+      values[v] = value_of(found->second);
   }
 }
 
+/// The positions whose points have different UVs: a texture seam given as copies of
+/// its points, which the repair merges into one vertex.
+inline std::size_t positions_with_several_uvs(const rsr_io::Polygon_soup& soup, const Point_at& point_at)
+{
+  std::vector<std::uint8_t> on_seam(soup.points.size(), 0);
+  for(std::size_t i = 0; i < soup.points.size(); ++i) {
+    const std::size_t first = point_at.at(soup.points[i]);
+    if(soup.uvs[i] != soup.uvs[first])
+      on_seam[first] = 1;
+  }
+  return std::size_t(std::count(on_seam.begin(), on_seam.end(), 1));
+}
+
+/// The soup's vertex colours and texture coordinates on `input.mesh`; UVs with a seam
+/// are dropped, with one line on stderr.
+inline void add_vertex_values(const rsr_io::Polygon_soup& soup, const std::string& path, Input& input)
+{
+  if(soup.colors.empty() && soup.uvs.empty() && soup.uv_seam_points == 0)
+    return;
+  const Point_at point_at = first_point_at_each_position(soup);
+  if(!soup.colors.empty())
+    add_values_by_position<CGAL::IO::Color>(point_at, [&](std::size_t i) {
+      const auto& c = soup.colors[i];
+      return CGAL::IO::Color(c[0], c[1], c[2]);
+    }, "v:color", input.mesh);
+  input.uv_seam_vertices =
+      soup.uv_seam_points + (soup.uvs.empty() ? 0 : positions_with_several_uvs(soup, point_at));
+  if(input.uv_seam_vertices > 0)
+    std::cerr << "range_space_remesh: " << quote(path) << ": " << input.uv_seam_vertices
+              << (input.uv_seam_vertices == 1 ? " vertex has" : " vertices have")
+              << " several texture coordinates (a seam): the texture coordinates are dropped" << std::endl;
+  else if(!soup.uvs.empty())
+    add_values_by_position<K::Point_2>(point_at, [&](std::size_t i) {
+      return K::Point_2(soup.uvs[i][0], soup.uvs[i][1]);
+    }, "v:uv", input.mesh);
+}
+
 /// Reads INPUT into a triangle mesh (see rsr_io::read_mesh_file): repaired into an
-/// oriented 2-manifold unless --strict, polygons triangulated, vertex colours kept.
+/// oriented 2-manifold unless --strict, polygons triangulated, vertex colours and
+/// texture coordinates kept.
 inline Input read_input(const std::string& path, bool strict)
 {
   Input input;
@@ -94,8 +143,7 @@ inline Input read_input(const std::string& path, bool strict)
   } catch(const RSR::Remeshing_error& e) {
     fail(quote(path) + ": " + e.what() + (strict ? " (drop --strict to repair it)" : ""));
   }
-  if(!soup.colors.empty())
-    add_colors_by_position(soup, input.mesh);
+  add_vertex_values(soup, path, input);
   const auto repaired = std::chrono::steady_clock::now();
   input.read_ms = std::chrono::duration<double, std::milli>(read - start).count();
   input.repair_ms = std::chrono::duration<double, std::milli>(repaired - read).count();
@@ -128,23 +176,32 @@ inline void report_repairs(const std::string& path, const RSR::Input_repair_stat
   std::cerr << line.str() << (r.repaired() ? " (--strict refuses such input)" : "") << std::endl;
 }
 
+/// The values of `map` (if any) on `from`, as the property `name` of `to`'s vertices at
+/// the same positions: the crease copies sit at their original's position.
+template <class Map>
+void copy_by_position(const Mesh& from, const std::optional<Map>& map, const std::string& name, Mesh& to)
+{
+  if(!map)
+    return;
+  using Value = typename boost::property_traits<Map>::value_type;
+  std::map<Position, Value> by_position;
+  for(auto v : vertices(from))
+    by_position[{{from.point(v).x(), from.point(v).y(), from.point(v).z()}}] = (*map)[v];
+  auto copied = to.add_property_map<Mesh::Vertex_index, Value>(name).first;
+  for(auto v : vertices(to))
+    copied[v] = by_position[{{to.point(v).x(), to.point(v).y(), to.point(v).z()}}];
+}
+
 /// With --sharp-angle, the input with zero-area triangles along its creases, so that
-/// the normal maps see each side's normal (vertex colours follow the copies).
+/// the normal maps see each side's normal (vertex colours and UVs follow the copies).
 inline Mesh with_creases_opened(Mesh input, const Options& options)
 {
   if(!(options.sharp_angle >= 0))
     return input;
   Mesh creased;
   RSR::insert_crease_triangles(input, creased, options.sharp_angle);
-  const auto colors = find_vertex_colors(input);
-  if(colors) { // copies sit at their original's position: match them by position
-    std::map<std::array<double, 3>, CGAL::IO::Color> by_position;
-    for(auto v : vertices(input))
-      by_position[{{input.point(v).x(), input.point(v).y(), input.point(v).z()}}] = (*colors)[v];
-    auto copied = creased.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first;
-    for(auto v : vertices(creased))
-      copied[v] = by_position[{{creased.point(v).x(), creased.point(v).y(), creased.point(v).z()}}];
-  }
+  copy_by_position(input, find_vertex_colors(input), "v:color", creased);
+  copy_by_position(input, find_vertex_uvs(input), "v:uv", creased);
   return creased;
 }
 

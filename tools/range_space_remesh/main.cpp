@@ -135,6 +135,7 @@ int run_program(int argc, char** argv)
   Input read = read_input(options.input, options.strict);
   io.read_ms = read.read_ms;
   io.repair_ms = read.repair_ms;
+  io.uv_seam_vertices = read.uv_seam_vertices;
   const Mesh input = with_creases_opened(std::move(read.mesh), options);
   // once, the input read: the runs of --target-vertices and --preserve-topology share it
   const std::size_t cap = vertex_cap(options);

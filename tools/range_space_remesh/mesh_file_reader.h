@@ -47,12 +47,17 @@ struct Read_error : std::runtime_error
 };
 
 /// What a file holds: points, polygons (indices into `points`, unchecked) and, if
-/// the file has vertex colours, one colour per point (red, green, blue in 0..255).
+/// the file has vertex colours, one colour per point (red, green, blue in 0..255);
+/// if it has texture coordinates and each point has one, one UV per point.
 struct Polygon_soup
 {
   std::vector<std::array<double, 3>> points;
   std::vector<std::vector<std::size_t>> polygons;
   std::vector<std::array<unsigned char, 3>> colors; // empty, or one per point
+  std::vector<std::array<double, 2>> uvs;           // empty, or one per point
+  /// points with several texture coordinates (on a texture seam): the UVs are then
+  /// dropped, a vertex map cannot hold them
+  std::size_t uv_seam_points = 0;
 };
 
 /// The largest a soup can be, in bytes of memory per byte of file: a binary PLY face
@@ -521,7 +526,7 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
     if(minimum == 0 ? element.count > 0 : element.count > values.bytes_left() / minimum)
       fail("it has fewer bytes than its " + std::to_string(element.count) + " '" + element.name + "' elements need");
     // which property is what: -1 where absent
-    int coordinate[3] = {-1, -1, -1}, channel[3] = {-1, -1, -1}, indices = -1;
+    int coordinate[3] = {-1, -1, -1}, channel[3] = {-1, -1, -1}, texture[2] = {-1, -1}, indices = -1;
     for(std::size_t p = 0; p < element.properties.size(); ++p) {
       const Ply_property& property = element.properties[p];
       const std::string& n = property.name;
@@ -533,6 +538,8 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
         else if(n == "red" || n == "r" || n == "diffuse_red") channel[0] = i;
         else if(n == "green" || n == "g" || n == "diffuse_green") channel[1] = i;
         else if(n == "blue" || n == "b" || n == "diffuse_blue") channel[2] = i;
+        else if(n == "s" || n == "u" || n == "texture_u" || n == "texture_s") texture[0] = i;
+        else if(n == "t" || n == "v" || n == "texture_v" || n == "texture_t") texture[1] = i;
       } else if(n == "vertex_indices" || n == "vertex_index") {
         indices = i;
       }
@@ -542,16 +549,20 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
     if(is_face && indices < 0)
       fail("its PLY faces have no vertex_indices list");
     const bool colored = is_vertex && channel[0] >= 0 && channel[1] >= 0 && channel[2] >= 0;
+    const bool textured = is_vertex && texture[0] >= 0 && texture[1] >= 0;
     if(is_vertex) {
       reserve_at_most(soup.points, element.count, values.bytes_left(), minimum);
       if(colored)
         reserve_at_most(colors, element.count, values.bytes_left(), minimum);
+      if(textured)
+        reserve_at_most(soup.uvs, element.count, values.bytes_left(), minimum);
     }
     if(is_face)
       reserve_at_most(soup.polygons, element.count, values.bytes_left(), minimum);
     for(std::uint64_t e = 0; e < element.count; ++e) {
       std::array<double, 3> point{};
       std::array<unsigned char, 3> color{};
+      std::array<double, 2> uv{};
       for(std::size_t p = 0; p < element.properties.size(); ++p) {
         const Ply_property& property = element.properties[p];
         double value = 0;
@@ -564,6 +575,9 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
             if(channel[c] == int(p))
               color[std::size_t(c)] = color_channel(value, is_float(property.type));
           }
+          for(int c = 0; c < 2; ++c)
+            if(texture[c] == int(p))
+              uv[std::size_t(c)] = value;
           continue;
         }
         double length = 0;
@@ -590,6 +604,8 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
         soup.points.push_back(point);
         if(colored)
           colors.push_back(color);
+        if(textured)
+          soup.uvs.push_back(uv);
       }
     }
     any_color = any_color || colored;
@@ -603,8 +619,56 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
 
 // ------------------------------------------------------------------------ OBJ
 
-/// "v x y z [w | r g b]" and "f a b c ..." lines (a corner: "i", "i/t", "i//n",
-/// "i/t/n"; negative indices count back from the last vertex); other lines ignored.
+/// The texture coordinate of an OBJ face corner "i/t[/n]", counted from 1 (negative:
+/// back from the last one read, of `count`); 0 if it has none or a wrong one.
+inline std::size_t texture_index(std::string_view corner, std::size_t count)
+{
+  const auto slash = corner.find('/');
+  if(slash == std::string_view::npos)
+    return 0;
+  const std::string_view rest = corner.substr(slash + 1);
+  long long t = 0;
+  if(!to_integer(rest.substr(0, rest.find('/')), t))
+    return 0;
+  if(t < 0)
+    t += static_cast<long long>(count) + 1;
+  return t >= 1 && t <= static_cast<long long>(count) ? std::size_t(t) : 0;
+}
+
+/// One UV per point from the corners' texture coordinates, into `soup.uvs`: kept only
+/// if every point of a face has one and only one (coinciding values count as one);
+/// the points with several are counted in `soup.uv_seam_points`.
+inline void uvs_of_corners(const std::vector<std::array<double, 2>>& texture_coordinates,
+                           const std::vector<std::vector<std::size_t>>& corner_uvs, Polygon_soup& soup)
+{
+  constexpr std::size_t none = 0;
+  std::vector<std::size_t> uv_of(soup.points.size(), none);
+  std::vector<std::uint8_t> on_seam(soup.points.size(), 0);
+  bool every_corner = true;
+  for(std::size_t f = 0; f < soup.polygons.size(); ++f)
+    for(std::size_t c = 0; c < soup.polygons[f].size(); ++c) {
+      const std::size_t point = soup.polygons[f][c], uv = corner_uvs[f][c];
+      every_corner = every_corner && uv != none;
+      if(uv == none)
+        continue;
+      if(uv_of[point] == none)
+        uv_of[point] = uv;
+      else if(texture_coordinates[uv_of[point] - 1] != texture_coordinates[uv - 1])
+        on_seam[point] = 1;
+    }
+  soup.uv_seam_points = std::size_t(std::count(on_seam.begin(), on_seam.end(), 1));
+  if(!every_corner || soup.uv_seam_points > 0)
+    return;
+  soup.uvs.resize(soup.points.size(), {{0, 0}}); // a point of no face: unused
+  for(std::size_t i = 0; i < soup.points.size(); ++i)
+    if(uv_of[i] != none)
+      soup.uvs[i] = texture_coordinates[uv_of[i] - 1];
+}
+
+/// "v x y z [w | r g b]", "vt u v" and "f a b c ..." lines (a corner: "i", "i/t",
+/// "i//n", "i/t/n"; negative indices count back from the last vertex or texture
+/// coordinate); other lines ignored. The texture coordinates are kept where every
+/// vertex has one (see `uvs_of_corners()`).
 inline Polygon_soup read_obj(std::string_view text, const std::string& name)
 {
   auto fail = [&](std::size_t line, const std::string& what) -> void {
@@ -614,8 +678,18 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name)
   Polygon_soup soup;
   std::vector<std::array<unsigned char, 3>> colors;
   bool any_color = false;
+  std::vector<std::array<double, 2>> texture_coordinates;
+  std::vector<std::vector<std::size_t>> corner_uvs; // per polygon, per corner: a `vt`, or 0 for none
   for(std::size_t line = 1; !in.at_end(); ++line, in.next_line()) {
     const std::string_view keyword = in.word_in_line('#');
+    if(keyword == "vt") {
+      std::array<double, 2> uv{};
+      for(double& x : uv)
+        if(!to_double(in.word_in_line('#'), x))
+          fail(line, "a texture coordinate has fewer than 2 numbers");
+      texture_coordinates.push_back(uv);
+      continue;
+    }
     if(keyword == "v") {
       double x[7];
       int n = 0;
@@ -633,8 +707,9 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name)
       }
       colors.push_back(color);
     } else if(keyword == "f") {
-      std::vector<std::size_t> polygon;
+      std::vector<std::size_t> polygon, uvs;
       for(std::string_view w; !(w = in.word_in_line('#')).empty();) {
+        uvs.push_back(texture_index(w, texture_coordinates.size()));
         long long index = 0;
         if(!to_integer(w.substr(0, w.find('/')), index) || index == 0)
           fail(line, "a face has a vertex index that is not a non-zero integer");
@@ -646,10 +721,13 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name)
         polygon.push_back(std::size_t(index - 1));
       }
       soup.polygons.push_back(std::move(polygon));
+      corner_uvs.push_back(std::move(uvs));
     }
   }
   if(any_color)
     soup.colors = std::move(colors);
+  if(!texture_coordinates.empty())
+    uvs_of_corners(texture_coordinates, corner_uvs, soup);
   return soup;
 }
 

@@ -25,9 +25,12 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <iomanip>
+#include <map>
 #include <ostream>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include <ext/stdio_filebuf.h> // an ostream on the file descriptor mkstemp gives
@@ -197,18 +200,73 @@ struct Write_options
   int precision = 17; // digits of text coordinates: doubles read back exactly
 };
 
+namespace internal {
+
+/// The type of "no texture coordinates" (a null `uvs`).
+struct No_uvs
+{};
+
+/// OBJ with texture coordinates, which CGAL's writer leaves out: "v", "vt" and
+/// "f a/a b/b ..." lines, one UV per vertex.
+template <class Mesh, class UVMap>
+bool write_obj_with_uvs(std::ostream& out, const Mesh& mesh, const UVMap& uvs, int precision)
+{
+  using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
+  std::map<vertex_descriptor, std::size_t> index;
+  out << std::setprecision(precision);
+  for(vertex_descriptor v : vertices(mesh)) {
+    index.emplace(v, index.size() + 1);
+    const auto& p = get(CGAL::vertex_point, mesh, v);
+    out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+  }
+  for(vertex_descriptor v : vertices(mesh))
+    out << "vt " << get(uvs, v).x() << ' ' << get(uvs, v).y() << '\n';
+  for(auto f : faces(mesh)) {
+    out << 'f';
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      out << ' ' << index[v] << '/' << index[v];
+    out << '\n';
+  }
+  return out.good();
+}
+
+/// A copy of `mesh` with its texture coordinates as the vertex properties "v:s" and
+/// "v:t" of doubles, which CGAL's PLY writer writes as the properties s and t.
+template <class Mesh, class UVMap>
+Mesh with_st_properties(const Mesh& mesh, const UVMap& uvs)
+{
+  Mesh copy = mesh;
+  auto s = copy.template add_property_map<typename Mesh::Vertex_index, double>("v:s").first;
+  auto t = copy.template add_property_map<typename Mesh::Vertex_index, double>("v:t").first;
+  for(auto v : vertices(copy)) { // a copy keeps the indices
+    s[v] = get(uvs, v).x();
+    t[v] = get(uvs, v).y();
+  }
+  return copy;
+}
+
+} // namespace internal
+
 /// Writes `mesh` to `out` in the format of the extension `ext` ("off", "obj", "ply",
 /// "stl"), with the vertex colours `colors` (if not null) where the format stores
-/// them (OFF, PLY); faces are split into triangles for STL. False on a stream error.
-template <class Mesh, class ColorMap>
+/// them (OFF, PLY) and the texture coordinates `uvs` (if not null) where it stores
+/// them (PLY as s and t, OBJ as vt); faces are split into triangles for STL. False on
+/// a stream error.
+template <class Mesh, class ColorMap, class UVMap = internal::No_uvs>
 bool write_mesh(std::ostream& out, const Mesh& mesh, const std::string& ext, const ColorMap* colors,
-                const Write_options& options)
+                const Write_options& options, const UVMap* uvs = nullptr)
 {
   const auto precision = CGAL::parameters::stream_precision(options.precision);
   const bool binary = options.binary && (ext == "ply" || ext == "stl");
   CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
   if(ext == "stl")
     return CGAL::IO::write_STL(out, internal::triangulated_copy(mesh), precision);
+  if constexpr(!std::is_same<UVMap, internal::No_uvs>::value) {
+    if(ext == "obj" && uvs)
+      return internal::write_obj_with_uvs(out, mesh, *uvs, options.precision);
+    if(ext == "ply" && uvs)
+      return write_mesh(out, internal::with_st_properties(mesh, *uvs), ext, colors, options);
+  }
   if(ext == "obj")
     return CGAL::IO::write_OBJ(out, mesh, precision);
   if(ext == "off")
@@ -228,10 +286,12 @@ public:
   Output_files& operator=(const Output_files&) = delete;
   ~Output_files() { discard(); }
 
-  /// Writes `mesh` (with the vertex colours `colors`, if not null, where the format
-  /// stores them: OFF and PLY) for `path`, under a temporary name next to it.
-  template <class Mesh, class ColorMap>
-  void add(const Mesh& mesh, const std::string& path, const ColorMap* colors, const Write_options& options)
+  /// Writes `mesh` (with the vertex colours `colors` and texture coordinates `uvs`, if
+  /// not null, where the format stores them; see `write_mesh()`) for `path`, under a
+  /// temporary name next to it.
+  template <class Mesh, class ColorMap, class UVMap = internal::No_uvs>
+  void add(const Mesh& mesh, const std::string& path, const ColorMap* colors, const Write_options& options,
+           const UVMap* uvs = nullptr)
   {
     const std::string ext = extension_of(path);
     if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
@@ -272,7 +332,7 @@ public:
       __gnu_cxx::stdio_filebuf<char> buffer(fd, std::ios::out | std::ios::binary); // closes fd
       std::ostream out(&buffer);
       try {
-        ok = write_mesh(out, mesh, ext, colors, options) && out.flush().good();
+        ok = write_mesh(out, mesh, ext, colors, options, uvs) && out.flush().good();
       } catch(const std::exception&) {
         ok = false;
       }

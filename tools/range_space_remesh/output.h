@@ -80,7 +80,7 @@ inline void check_output_names(const Options& options)
   check_output_paths(options);
 }
 
-/// Writes OUTPUT (with its vertex colours) and the --topology-report file: every file
+/// Writes OUTPUT (with its vertex colours and texture coordinates) and the --topology-report file: every file
 /// under a temporary name first, then all are renamed.
 inline void write_outputs(const Options& options, const Mesh& input, const Mesh& output,
                           const std::vector<RSR::Topology_defect<Mesh::Face_index>>& defects)
@@ -90,7 +90,8 @@ inline void write_outputs(const Options& options, const Mesh& input, const Mesh&
   try {
     Silenced_cerr silence; // CGAL's writers explain failures on std::cerr
     const auto colors = find_vertex_colors(output);
-    files.add(output, options.output, colors ? &*colors : nullptr, write_options);
+    const auto uvs = find_vertex_uvs(output);
+    files.add(output, options.output, colors ? &*colors : nullptr, write_options, uvs ? &*uvs : nullptr);
     if(!options.topology_report.empty())
       files.add(flagged_faces(input, defects), options.topology_report, static_cast<const Color_map*>(nullptr),
                 write_options);

@@ -29,24 +29,35 @@
 
 namespace rsr_program {
 
+/// The output's maps for what `np` gives of the input: its colours and texture
+/// coordinates are sampled onto the output.
+template <class NamedParameters>
+auto output_maps(const NamedParameters&, Mesh& output)
+{
+  using CGAL::parameters::is_default_parameter;
+  constexpr bool colors = !is_default_parameter<NamedParameters, CGAL::internal_np::vertex_color_map_t>::value;
+  constexpr bool uvs = !is_default_parameter<NamedParameters, CGAL::internal_np::vertex_texture_map_t>::value;
+  auto color_map = [&output] { return output.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first; };
+  auto uv_map = [&output] { return output.add_property_map<Mesh::Vertex_index, K::Point_2>("v:uv").first; };
+  if constexpr(colors && uvs)
+    return RSR::parameters::vertex_color_map(color_map()).vertex_texture_map(uv_map());
+  else if constexpr(colors)
+    return RSR::parameters::vertex_color_map(color_map());
+  else if constexpr(uvs)
+    return RSR::parameters::vertex_texture_map(uv_map());
+  else
+    return CGAL::parameters::default_values();
+}
+
 /// The primal remesh, or the whole dual pipeline, with the named parameters `np`
 /// (cell size, seeding and, but for the identity, the range map).
 template <class NamedParameters>
 RSR::Remesh_statistics run(const Mesh& input, const NamedParameters& np, const Options& options, Mesh& output)
 {
-  // the input's vertex colours, if it has them, are sampled onto the output
-  constexpr bool colors =
-      !CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_color_map_t>::value;
-  auto np_out = [&output] {
-    return CGAL::parameters::vertex_color_map(
-        output.add_property_map<Mesh::Vertex_index, CGAL::IO::Color>("v:color").first);
-  };
+  const auto np_out = output_maps(np, output);
   RSR::Remesh_statistics stats;
   if(options.output_kind == "primal") {
-    if constexpr(colors)
-      stats.primal = RSR::primal_remesh(input, output, np, np_out());
-    else
-      stats.primal = RSR::primal_remesh(input, output, np);
+    stats.primal = RSR::primal_remesh(input, output, np, np_out);
     stats.time_total_ms = stats.primal.time_total_ms;
     return stats;
   }
@@ -55,21 +66,26 @@ RSR::Remesh_statistics run(const Mesh& input, const NamedParameters& np, const O
                                                         : RSR::Dual_placement::QEM;
   const auto np_all =
       np.quad_collapse(options.collapse).dual_placement(placement).number_of_relaxation_steps(options.relax);
-  if constexpr(colors)
-    return RSR::remesh(input, output, np_all, np_out());
-  else
-    return RSR::remesh(input, output, np_all);
+  return RSR::remesh(input, output, np_all, np_out);
 }
 
-/// `run` with the input's vertex colours added to `np`, if it has any.
+/// `run` with the input's vertex colours and texture coordinates added to `np`, where
+/// it has them.
 template <class NamedParameters>
-RSR::Remesh_statistics run_with_colors(const Mesh& input, const NamedParameters& np, const Options& options,
-                                       Mesh& output)
+RSR::Remesh_statistics run_with_vertex_values(const Mesh& input, const NamedParameters& np, const Options& options,
+                                              Mesh& output)
 {
-  if(const auto colors = find_vertex_colors(input))
+  const auto colors = find_vertex_colors(input);
+  const auto uvs = find_vertex_uvs(input);
+  if(colors && uvs)
+    return run(input, np.vertex_color_map(*colors).vertex_texture_map(*uvs), options, output);
+  if(colors)
     return run(input, np.vertex_color_map(*colors), options, output);
+  if(uvs)
+    return run(input, np.vertex_texture_map(*uvs), options, output);
   return run(input, np, options, output);
 }
+
 /// The input's vertex normals for the normal-based maps: from a table computed in one
 /// pass over the faces for the complete scan, which maps every vertex (about ten times
 /// cheaper than reading each vertex's star on its own), lazily for --seeded, which
@@ -146,23 +162,23 @@ struct Map_run
 
 inline RSR::Remesh_statistics remesh_with_identity(const Map_run& r)
 {
-  return run_with_colors(r.input, r.np, r.options, r.output);
+  return run_with_vertex_values(r.input, r.np, r.options, r.output);
 }
 
 inline RSR::Remesh_statistics remesh_with_gauss(const Map_run& r)
 {
-  return run_with_colors(r.input,
-                         r.np.range_map(RSR::Gauss_range_map<Input_normals>(r.normals, r.options.length_unit)),
-                         r.options, r.output);
+  return run_with_vertex_values(r.input,
+                                r.np.range_map(RSR::Gauss_range_map<Input_normals>(r.normals, r.options.length_unit)),
+                                r.options, r.output);
 }
 
 inline RSR::Remesh_statistics remesh_with_position_normal(const Map_run& r)
 {
   const auto points = get(CGAL::vertex_point, r.input);
-  return run_with_colors(r.input,
-                         r.np.range_map(RSR::Position_normal_range_map(
-                             points, r.normals, 1.0, r.options.normal_weight * r.options.length_unit)),
-                         r.options, r.output);
+  return run_with_vertex_values(r.input,
+                                r.np.range_map(RSR::Position_normal_range_map(
+                                    points, r.normals, 1.0, r.options.normal_weight * r.options.length_unit)),
+                                r.options, r.output);
 }
 
 /// --color-weight, or the map's default.
@@ -176,10 +192,10 @@ inline RSR::Remesh_statistics remesh_with_position_normal_color(const Map_run& r
   const auto points = get(CGAL::vertex_point, r.input);
   const Color_map colors = *find_vertex_colors(r.input); // remesh() checked that there are some
   const double unit = r.options.length_unit, wn = r.options.normal_weight * unit;
-  return run_with_colors(r.input,
-                         r.np.range_map(RSR::Position_normal_color_range_map(
-                             points, r.normals, colors, 1.0, wn, color_weight(r.options) * unit)),
-                         r.options, r.output);
+  return run_with_vertex_values(r.input,
+                                r.np.range_map(RSR::Position_normal_color_range_map(
+                                    points, r.normals, colors, 1.0, wn, color_weight(r.options) * unit)),
+                                r.options, r.output);
 }
 
 inline RSR::Remesh_statistics remesh_with_position_normal_color_gradient(const Map_run& r)
@@ -189,18 +205,18 @@ inline RSR::Remesh_statistics remesh_with_position_normal_color_gradient(const M
   const Color_map colors = *find_vertex_colors(r.input); // remesh() checked that there are some
   // gradient magnitudes are colour per length: one more length unit
   const RSR::Color_gradient_magnitude_map<Mesh, Color_map> gradients(r.input, colors);
-  return run_with_colors(r.input,
-                         r.np.range_map(RSR::Position_normal_color_range_map(
-                             points, r.normals, gradients, 1.0, wn, color_weight(r.options) * unit * unit)),
-                         r.options, r.output);
+  return run_with_vertex_values(r.input,
+                                r.np.range_map(RSR::Position_normal_color_range_map(
+                                    points, r.normals, gradients, 1.0, wn, color_weight(r.options) * unit * unit)),
+                                r.options, r.output);
 }
 
 inline RSR::Remesh_statistics remesh_with_view(const Map_run& r)
 {
-  return run_with_colors(r.input,
-                         r.np.range_map(RSR::View_range_map<boost::property_map<Mesh, CGAL::vertex_point_t>::const_type>(
-                             get(CGAL::vertex_point, r.input), r.options.camera, r.options.depth_weight)),
-                         r.options, r.output);
+  using View_map = RSR::View_range_map<boost::property_map<Mesh, CGAL::vertex_point_t>::const_type>;
+  return run_with_vertex_values(
+      r.input, r.np.range_map(View_map(get(CGAL::vertex_point, r.input), r.options.camera, r.options.depth_weight)),
+      r.options, r.output);
 }
 
 /// Remeshes with the map of the options, at cell size `h` or, with --target-vertices,

@@ -50,6 +50,7 @@ inline std::size_t border_cycles(const Mesh& mesh)
 struct Io_times
 {
   double read_ms = 0, repair_ms = 0, write_ms = 0;
+  std::size_t uv_seam_vertices = 0; // what the reading dropped: UVs of a texture seam
 };
 
 inline void print_stats(const Options& options, const Mesh& input, const Mesh& output, const RSR::Remesh_statistics& all,
@@ -114,6 +115,8 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                    {"rounds", all.untangle.rounds},
                    {"tries", all.untangle.tries}};
   j["cell_size_used"] = s.cell_size;
+  j["texture_coordinates"] = {{"carried", find_vertex_uvs(output).has_value()},
+                              {"seam_vertices", io.uv_seam_vertices}};
   j["input_repairs"] = {{"repaired", repairs.repaired()},
                         {"merged_points", repairs.merged_points},
                         {"removed_isolated_points", repairs.removed_isolated_points},

@@ -73,6 +73,16 @@ well placed. Its normal is the normalised average of the vertices' normals.
       \cgalParamType{a readable property map, vertex -> `CGAL::IO::Color` or triples in [0, 1]}
       \cgalParamDefault{none}
     \cgalParamNEnd
+    \cgalParamNBegin{vertex_texture_map}
+      \cgalParamDescription{texture coordinates (UV) of the primal vertices}
+      \cgalParamType{a readable property map, vertex -> a CGAL 2-D point or vector, or `std::array<double, 2>`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_attribute_maps}
+      \cgalParamDescription{any other vertex properties of the primal}
+      \cgalParamType{a readable property map, or a `std::tuple` of them (value types as for `primal_remesh()`)}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
     \cgalParamNBegin{progress_visitor}
       \cgalParamDescription{told how far the run is and asked whether to go on, as for `remesh()`; on cancellation `quads` is left empty}
       \cgalParamType{a callable `bool(Remeshing_stage, double)`}
@@ -106,6 +116,17 @@ well placed. Its normal is the normalised average of the vertices' normals.
       \cgalParamType{a writable property map}
       \cgalParamDefault{none}
     \cgalParamNEnd
+    \cgalParamNBegin{vertex_texture_map}
+      \cgalParamDescription{receives the texture coordinates, mixed as the colours are}
+      \cgalParamType{a writable property map}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_attribute_maps}
+      \cgalParamDescription{receives the properties of `np_in`'s maps of the same position, mixed as
+                            the colours are}
+      \cgalParamType{a writable property map, or a `std::tuple` of as many as `np_in` gives}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
     \cgalParamNBegin{vertex_tangent_planes_map}
       \cgalParamDescription{receives each dual vertex's `Tangent_planes`, which `collapse_quads()` and `relax_on_tangent_planes()` use}
       \cgalParamType{a writable property map, vertex -> `Tangent_planes`}
@@ -126,11 +147,13 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
   static_assert(internal::check_named_parameters<struct dualize_in, NamedParametersIn, cgal_np::vertex_point_t,
                                                  cgal_np::vertex_normal_map_t, np::dual_placement_t,
                                                  np::vertex_crease_normal_map_t, cgal_np::vertex_color_map_t,
+                                                 cgal_np::vertex_texture_map_t, np::vertex_attribute_maps_t,
                                                  np::progress_visitor_t, cgal_np::vertex_index_t,
                                                  cgal_np::face_index_t, cgal_np::halfedge_index_t>());
   static_assert(internal::check_named_parameters<struct dualize_out, NamedParametersOut, cgal_np::vertex_point_t,
                                                  cgal_np::vertex_normal_map_t, np::vertex_tangent_planes_map_t,
-                                                 cgal_np::vertex_color_map_t>());
+                                                 cgal_np::vertex_color_map_t, cgal_np::vertex_texture_map_t,
+                                                 np::vertex_attribute_maps_t>());
   internal::refuse_same_mesh(primal, quads, "dualize()");
   const internal::Progress progress = internal::progress_of(np_in);
   return internal::emptied_on_cancel(

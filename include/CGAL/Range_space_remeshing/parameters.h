@@ -69,6 +69,7 @@ enum seed_faces_t { seed_faces };
 enum dual_placement_t { dual_placement };
 enum vertex_tangent_planes_map_t { vertex_tangent_planes_map };
 enum vertex_crease_normal_map_t { vertex_crease_normal_map };
+enum vertex_attribute_maps_t { vertex_attribute_maps };
 enum quad_collapse_t { quad_collapse };
 enum number_of_collapse_passes_t { number_of_collapse_passes };
 enum number_of_target_vertices_t { number_of_target_vertices };
@@ -88,6 +89,7 @@ enum progress_visitor_t { progress_visitor };
   P(internal_np, dual_placement_t, dual_placement)                                       \
   P(internal_np, vertex_tangent_planes_map_t, vertex_tangent_planes_map)                 \
   P(internal_np, vertex_crease_normal_map_t, vertex_crease_normal_map)                   \
+  P(internal_np, vertex_attribute_maps_t, vertex_attribute_maps)                         \
   P(internal_np, quad_collapse_t, quad_collapse)                                         \
   P(internal_np, number_of_collapse_passes_t, number_of_collapse_passes)                 \
   P(internal_np, number_of_target_vertices_t, number_of_target_vertices)                 \
@@ -104,6 +106,7 @@ enum progress_visitor_t { progress_visitor };
   P(CGAL::internal_np, vertex_is_constrained_t, vertex_is_constrained_map)               \
   P(CGAL::internal_np, edge_is_constrained_t, edge_is_constrained_map)                   \
   P(CGAL::internal_np, vertex_color_map_t, vertex_color_map)                             \
+  P(CGAL::internal_np, vertex_texture_map_t, vertex_texture_map)                         \
   P(CGAL::internal_np, vertex_normal_map_t, vertex_normal_map)                           \
   P(CGAL::internal_np, vertex_index_t, vertex_index_map)                                 \
   P(CGAL::internal_np, face_index_t, face_index_map)                                     \

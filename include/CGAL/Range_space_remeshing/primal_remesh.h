@@ -511,7 +511,8 @@ constexpr bool check_primal_remesh_parameters()
                                 np::number_of_target_vertices_t, np::grid_origin_t, cgal_np::seeding_method_t,
                                 np::seed_faces_t, cgal_np::maximum_number_t, np::check_topology_t,
                                 np::preserve_topology_t, np::topology_visitor_t, np::progress_visitor_t,
-                                cgal_np::vertex_normal_map_t, cgal_np::vertex_color_map_t, cgal_np::vertex_point_t,
+                                cgal_np::vertex_normal_map_t, cgal_np::vertex_color_map_t, cgal_np::vertex_texture_map_t,
+                                np::vertex_attribute_maps_t, cgal_np::vertex_point_t,
                                 cgal_np::geom_traits_t, cgal_np::vertex_index_t, cgal_np::face_index_t, More...>();
 }
 
@@ -670,6 +671,21 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
       \cgalParamType{a readable property map, vertex -> `CGAL::IO::Color` or `std::array<double, 3>`}
       \cgalParamDefault{none}
     \cgalParamNEnd
+    \cgalParamNBegin{vertex_texture_map}
+      \cgalParamDescription{the input's vertex texture coordinates (UV), sampled at the output's
+                            vertices into `np_out`'s map}
+      \cgalParamType{a readable property map, vertex -> a CGAL 2-D point or vector, or
+                     `std::array<double, 2>`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_attribute_maps}
+      \cgalParamDescription{any other vertex properties of the input, sampled at the output's
+                            vertices into `np_out`'s maps of the same position}
+      \cgalParamType{a readable property map, or a `std::tuple` of them; the values may be
+                     numbers, `std::array`s of numbers, `CGAL::IO::Color` or CGAL 2-D and 3-D
+                     points and vectors}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
     \cgalParamNBegin{vertex_normal_map}
       \cgalParamDescription{unit normals of the input's vertices, from which the output's normals
                             (`np_out`) are interpolated}
@@ -692,7 +708,11 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
   corners include copies of one point, as `insert_crease_triangles()` makes, the
   normal of the side with the larger weight, not a blend of both), and
   `vertex_crease_normal_map` (a writable map receiving, at such a vertex, the normal
-  of the other side, and the null vector elsewhere; for `dualize()`).
+  of the other side, and the null vector elsewhere; for `dualize()`); and
+  `vertex_color_map`, `vertex_texture_map` and `vertex_attribute_maps` (writable maps
+  receiving the values of `np_in`'s maps interpolated with the barycentric coordinates of
+  each output vertex in the input triangle it lies in; a property is carried only where
+  both `np_in` and `np_out` give its map).
 
 \returns what the run did, including per-stage times.
 \throws Remeshing_error on an empty mesh, a non-triangle face, a non-finite map value or cell size, a cell size so small that
@@ -719,7 +739,9 @@ Statistics primal_remesh(const TriangleMesh& tm, PolygonMesh& out,
   static_assert(internal::check_named_parameters<struct primal_remesh_out, NamedParametersOut,
                                                  CGAL::internal_np::vertex_point_t, CGAL::internal_np::vertex_normal_map_t,
                                                  internal_np::vertex_crease_normal_map_t,
-                                                 CGAL::internal_np::vertex_color_map_t>());
+                                                 CGAL::internal_np::vertex_color_map_t,
+                                                 CGAL::internal_np::vertex_texture_map_t,
+                                                 internal_np::vertex_attribute_maps_t>());
   if constexpr(!internal::has_usable_range_map<TriangleMesh, NamedParametersIn>()) {
     internal::refuse_range_map<typename internal::Range_map_of<TriangleMesh, NamedParametersIn>::type>();
     return Statistics();

@@ -12,6 +12,7 @@
 #include <CGAL/Range_space_remeshing/relax_on_tangent_planes.h>
 #include <CGAL/Range_space_remeshing/internal/Pooled_tangent_planes_map.h>
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
+#include <CGAL/Range_space_remeshing/internal/Vertex_attributes.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -99,10 +100,9 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
 
   const auto start = std::chrono::steady_clock::now();
   Remesh_statistics stats;
-  // vertex colours go along where the input has them (np) and the output wants them (np_out)
-  constexpr bool wants_colors =
-      !CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::vertex_color_map_t>::value &&
-      !CGAL::parameters::is_default_parameter<NamedParametersOut, CGAL::internal_np::vertex_color_map_t>::value;
+  // vertex attributes go along where the input has them (np) and the output wants them (np_out)
+  const auto attributes = vertex_attributes_of(np, np_out);
+  using Attributes = std::decay_t<decltype(attributes)>;
   Primal primal;
   auto primal_normals = primal.add_property_map<typename Primal::Vertex_index, Vector>("v:normal").first;
   auto crease_normals = primal.add_property_map<typename Primal::Vertex_index, Vector>("v:crease_normal").first;
@@ -144,13 +144,11 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
   };
   // Nothing resolved at this cell size (or only pieces without a dual): an empty
   // result, which the statistics explain, rather than an error of a later stage.
-  if constexpr(wants_colors) { // the primal carries colours only when they are wanted
-    auto primal_colors = primal.add_property_map<typename Primal::Vertex_index, std::array<double, 3>>("v:color").first;
-    if(!remesh_primal(primal_out.vertex_color_map(primal_colors)))
+  if constexpr(!Attributes::empty) { // the primal carries them as numbers, unrounded
+    const auto stages = split_attributes(attributes, add_number_maps(primal, attributes));
+    if(!remesh_primal(with_attribute_pairs(primal_out, stages.first)))
       return finish();
-    stats.dual = build_dual(primal, quads, dual_in.vertex_color_map(primal_colors),
-                            dual_out.vertex_color_map(get_parameter(np_out, CGAL::internal_np::vertex_color_map)),
-                            progress);
+    stats.dual = build_dual(primal, quads, dual_in, with_attribute_pairs(dual_out, stages.second), progress);
   } else {
     if(!remesh_primal(primal_out))
       return finish();
@@ -317,6 +315,21 @@ empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
       \cgalParamType{a readable property map, vertex -> `CGAL::IO::Color` or `std::array<double, 3>`}
       \cgalParamDefault{none}
     \cgalParamNEnd
+    \cgalParamNBegin{vertex_texture_map}
+      \cgalParamDescription{the input's vertex texture coordinates (UV), carried to `np_out`'s map
+                            as the colours are}
+      \cgalParamType{a readable property map, vertex -> a CGAL 2-D point or vector, or
+                     `std::array<double, 2>`}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_attribute_maps}
+      \cgalParamDescription{any other vertex properties of the input, carried to `np_out`'s maps of
+                            the same position as the colours are}
+      \cgalParamType{a readable property map, or a `std::tuple` of them; the values may be
+                     numbers, `std::array`s of numbers, `CGAL::IO::Color` or CGAL 2-D and 3-D
+                     points and vectors}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
   \cgalNamedParamsEnd
 \param np_out optional named parameters for `quads`:
   \cgalNamedParamsBegin
@@ -324,6 +337,18 @@ empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
     \cgalParamNBegin{vertex_color_map}
       \cgalParamDescription{receives the colours, if `np` has the input's}
       \cgalParamType{a writable property map, vertex -> colour}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_texture_map}
+      \cgalParamDescription{receives the texture coordinates, if `np` has the input's}
+      \cgalParamType{a writable property map, vertex -> UV}
+      \cgalParamDefault{none}
+    \cgalParamNEnd
+    \cgalParamNBegin{vertex_attribute_maps}
+      \cgalParamDescription{receives the properties of `np`'s maps of the same position; these and
+                            the maps above must be property maps of `quads` (they follow its
+                            vertices through the collapse)}
+      \cgalParamType{a writable property map, or a `std::tuple` of as many as `np` gives}
       \cgalParamDefault{none}
     \cgalParamNEnd
   \cgalNamedParamsEnd
@@ -346,7 +371,9 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
                 CGAL::internal_np::number_of_relaxation_steps_t>());
   static_assert(internal::check_named_parameters<struct remesh_np_out, NamedParametersOut,
                                                  CGAL::internal_np::vertex_point_t,
-                                                 CGAL::internal_np::vertex_color_map_t>());
+                                                 CGAL::internal_np::vertex_color_map_t,
+                                                 CGAL::internal_np::vertex_texture_map_t,
+                                                 internal_np::vertex_attribute_maps_t>());
   if constexpr(!internal::has_usable_range_map<TriangleMesh, NamedParameters>()) {
     internal::refuse_range_map<typename internal::Range_map_of<TriangleMesh, NamedParameters>::type>();
     return Remesh_statistics();

@@ -14,7 +14,6 @@
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
 #include <CGAL/Range_space_remeshing/parameters.h>
-#include <CGAL/Range_space_remeshing/internal/Color.h>
 #include <CGAL/Range_space_remeshing/internal/Dual_joins.h>
 #include <CGAL/Range_space_remeshing/internal/Dual_repairs.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
@@ -22,6 +21,7 @@
 #include <CGAL/Range_space_remeshing/internal/Polygon_kernel.h>
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
+#include <CGAL/Range_space_remeshing/internal/Vertex_attributes.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
@@ -125,10 +125,6 @@ class Dual_builder
   static constexpr bool has_crease_normals = given<NamedParametersIn, internal_np::vertex_crease_normal_map_t>;
   static constexpr bool wants_normals = given<NamedParametersOut, CGAL::internal_np::vertex_normal_map_t>;
   static constexpr bool wants_planes = given<NamedParametersOut, internal_np::vertex_tangent_planes_map_t>;
-  // colours: the average of the primal face's, where the primal has them (np_in) and
-  // the dual wants them (np_out)
-  static constexpr bool wants_colors = given<NamedParametersIn, CGAL::internal_np::vertex_color_map_t> &&
-                                       given<NamedParametersOut, CGAL::internal_np::vertex_color_map_t>;
 
   // the type of a named parameter, or of its default
   template <class NP, class Tag, class Default>
@@ -140,8 +136,6 @@ class Dual_builder
                             CGAL::Constant_property_map<vertex_descriptor, int>>;
   using Crease_normal_map = Chosen<NamedParametersIn, internal_np::vertex_crease_normal_map_t,
                                    CGAL::Constant_property_map<vertex_descriptor, int>>;
-  using In_colors = Chosen<NamedParametersIn, CGAL::internal_np::vertex_color_map_t,
-                           CGAL::Constant_property_map<vertex_descriptor, CGAL::IO::Color>>;
   using Out_VPM = typename GetVertexPointMap<QuadMesh, NamedParametersOut>::type;
   using Out_point = typename boost::property_traits<Out_VPM>::value_type;
   using Out_vector = typename CGAL::Kernel_traits<Out_point>::Kernel::Vector_3;
@@ -149,9 +143,10 @@ class Dual_builder
                              CGAL::Constant_property_map<dual_vertex, Out_vector>>;
   using Out_planes = Chosen<NamedParametersOut, internal_np::vertex_tangent_planes_map_t,
                             CGAL::Constant_property_map<dual_vertex, Tangent_planes>>;
-  using Out_colors = Chosen<NamedParametersOut, CGAL::internal_np::vertex_color_map_t,
-                            CGAL::Constant_property_map<dual_vertex, CGAL::IO::Color>>;
-  using Out_color = typename boost::property_traits<Out_colors>::value_type;
+  // colours, texture coordinates, user maps: where the primal has them (np_in) and the
+  // dual wants them (np_out)
+  using Attributes = decltype(vertex_attributes_of(std::declval<const NamedParametersIn&>(),
+                                                   std::declval<const NamedParametersOut&>()));
   using Face_index = decltype(CGAL::get_initialized_face_index_map(std::declval<const PolygonMesh&>(),
                                                                    std::declval<const NamedParametersIn&>()));
   using Vertex_index = decltype(CGAL::get_initialized_vertex_index_map(std::declval<const PolygonMesh&>(),
@@ -174,8 +169,6 @@ public:
                                    CGAL::Constant_property_map<vertex_descriptor, int>(0))),
       crease_normal_map_(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np_in, internal_np::vertex_crease_normal_map),
                                           CGAL::Constant_property_map<vertex_descriptor, int>(0))),
-      in_colors_(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np_in, CGAL::internal_np::vertex_color_map),
-                                  CGAL::Constant_property_map<vertex_descriptor, CGAL::IO::Color>())),
       placement_(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np_in, internal_np::dual_placement), Dual_placement::QEM)),
       out_vpm_(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np_out, CGAL::internal_np::vertex_point),
                                 get_property_map(CGAL::vertex_point, quads))),
@@ -183,8 +176,7 @@ public:
                                     CGAL::Constant_property_map<dual_vertex, Out_vector>(CGAL::NULL_VECTOR))),
       out_planes_(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np_out, internal_np::vertex_tangent_planes_map),
                                    CGAL::Constant_property_map<dual_vertex, Tangent_planes>())),
-      out_colors_(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np_out, CGAL::internal_np::vertex_color_map),
-                                   CGAL::Constant_property_map<dual_vertex, CGAL::IO::Color>())),
+      attributes_(vertex_attributes_of(np_in, np_out)),
       face_index_(CGAL::get_initialized_face_index_map(primal, np_in)),
       vertex_index_(CGAL::get_initialized_vertex_index_map(primal, np_in)),
       halfedge_index_(CGAL::get_initialized_halfedge_index_map(primal, np_in))
@@ -302,8 +294,8 @@ private:
     }
   }
 
-  // a dual vertex with its position, normal, the current `planes_` and the colour of
-  // the current `color_sources_`
+  // a dual vertex with its position, normal, the current `planes_` and the attributes
+  // mixed from the current `attribute_sources_`
   dual_vertex add_dual_vertex(const Vec3& position, const Vec3& normal)
   {
     const dual_vertex dv = add_vertex(quads_);
@@ -312,35 +304,28 @@ private:
       put(out_normals_, dv, Out_vector(normal[0], normal[1], normal[2]));
     if constexpr(wants_planes)
       put(out_planes_, dv, planes_);
-    if constexpr(wants_colors) {
-      Vec3 rgb = {{0, 0, 0}};
-      for(const auto& [v, weight] : color_sources_) {
-        const Vec3 c = to_rgb(get(in_colors_, v));
-        for(int d = 0; d < 3; ++d)
-          rgb[d] += weight * c[d];
-      }
-      put(out_colors_, dv, from_rgb<Out_color>(rgb));
-    }
+    if constexpr(!Attributes::empty)
+      attributes_.put_mixed(dv, attribute_sources_);
     return dv;
   }
 
-  // the tangent planes (and colour sources) of the corners of primal face f
+  // the tangent planes (and attribute sources) of the corners of primal face f
   void gather_planes_of_face(typename boost::graph_traits<PolygonMesh>::face_descriptor f)
   {
     planes_.clear();
-    color_sources_.clear();
+    attribute_sources_.clear();
     for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, primal_), primal_)) {
       const std::size_t i = index(v);
       planes_.emplace_back(point_of_[i], normal_of_[i]);
       if constexpr(has_crease_normals)
         if(crease_normal_of_[i] != Vec3{{0, 0, 0}})
           planes_.emplace_back(point_of_[i], crease_normal_of_[i]);
-      if constexpr(wants_colors)
-        color_sources_.emplace_back(v, 1.); // weighted equally: the face's mean colour
+      if constexpr(!Attributes::empty)
+        attribute_sources_.emplace_back(v, 1.); // weighted equally: the face's mean
     }
-    if constexpr(wants_colors)
-      for(auto& color_source : color_sources_)
-        color_source.second /= double(color_sources_.size());
+    if constexpr(!Attributes::empty)
+      for(auto& source : attribute_sources_)
+        source.second /= double(attribute_sources_.size());
   }
 
   // the dual vertex of each primal face, placed from its corners' tangent planes
@@ -391,7 +376,7 @@ private:
       normal[d] = (1 - t) * normal_of_[ia][d] + t * normal_of_[ib][d];
     }
     planes_.assign({{point_of_[ia], normal_of_[ia]}, {point_of_[ib], normal_of_[ib]}});
-    color_sources_.assign({{a, 1 - t}, {b, t}});
+    attribute_sources_.assign({{a, 1 - t}, {b, t}});
     return add_dual_vertex(position, normalized(normal));
   }
 
@@ -559,12 +544,11 @@ private:
   VPM vpm_;
   Normal_map normal_map_;
   Crease_normal_map crease_normal_map_;
-  In_colors in_colors_;
   Dual_placement placement_;
   Out_VPM out_vpm_;
   Out_normals out_normals_;
   Out_planes out_planes_;
-  Out_colors out_colors_;
+  Attributes attributes_;
   Face_index face_index_;
   Vertex_index vertex_index_;
   Halfedge_index halfedge_index_;
@@ -575,7 +559,7 @@ private:
   std::vector<Border_chain> chains_;
   std::vector<std::size_t> chain_of_; // by border halfedge index, or no_chain
   Tangent_planes planes_;             // of the dual vertex being added
-  std::vector<std::pair<vertex_descriptor, double>> color_sources_; // with weights
+  std::vector<std::pair<vertex_descriptor, double>> attribute_sources_; // with weights
   std::vector<dual_vertex> dual_of_face_, dual_of_chain_;
   std::vector<dual_halfedge> dual_of_halfedge_;
   std::vector<dual_halfedge> closing_of_vertex_;

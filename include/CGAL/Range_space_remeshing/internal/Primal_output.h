@@ -13,11 +13,11 @@
 
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/parameters.h>
-#include <CGAL/Range_space_remeshing/internal/Color.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Prefetch.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
+#include <CGAL/Range_space_remeshing/internal/Vertex_attributes.h>
 
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
@@ -33,6 +33,8 @@
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -182,15 +184,11 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
   using In_point = typename boost::property_traits<VPM>::value_type;
   const auto given_normals = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_normal_map),
                                               CGAL::Constant_property_map<in_vertex, Vec3>());
-  // colours: sampled where the input has them (np_in) and the output wants them (np_out)
-  constexpr bool wants_colors =
-      !is_default_parameter<NamedParametersIn, CGAL::internal_np::vertex_color_map_t>::value &&
-      !is_default_parameter<NamedParametersOut, CGAL::internal_np::vertex_color_map_t>::value;
-  const auto input_colors = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_color_map),
-                                             CGAL::Constant_property_map<in_vertex, CGAL::IO::Color>());
-  auto output_colors = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_color_map),
-                                        CGAL::Constant_property_map<out_vertex, CGAL::IO::Color>());
-  using Out_color = typename boost::property_traits<decltype(output_colors)>::value_type;
+  // colours, texture coordinates, user maps: sampled where the input has them (np_in)
+  // and the output wants them (np_out)
+  const auto attributes = vertex_attributes_of(np_in, np_out);
+  using Attributes = std::decay_t<decltype(attributes)>;
+  std::array<std::pair<in_vertex, double>, 3> attribute_sources;
 
   const auto& vertices = tracer.intersection_vertices();
   const std::uint32_t none = Primal_complex::none;
@@ -213,15 +211,15 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
         prefetch_value(vpm, corner);
         if constexpr(needs_corner_normals && has_input_normals)
           prefetch_value(given_normals, corner);
-        if constexpr(wants_colors)
-          prefetch_value(input_colors, corner);
+        if constexpr(!Attributes::empty)
+          attributes.prefetch(corner);
       }
     if(!complex.is_kept(v))
       continue;
     const auto w = tracer.barycentric_coordinates(vertices[v]);
     const std::array<in_vertex, 3> corners = tracer.corners_of(vertices[v]);
     const std::array<In_point, 3> corner_points = {{get(vpm, corners[0]), get(vpm, corners[1]), get(vpm, corners[2])}};
-    std::array<double, 3> p = {{0, 0, 0}}, rgb = {{0, 0, 0}};
+    std::array<double, 3> p = {{0, 0, 0}};
     std::array<Vec3, 3> corner_normals;
     int c = 0;
     for(auto corner : corners) {
@@ -235,11 +233,8 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
         else
           corner_normals[c] = input_normals(corner);
       }
-      if constexpr(wants_colors) {
-        const Vec3 corner_rgb = to_rgb(get(input_colors, corner));
-        for(int d = 0; d < 3; ++d)
-          rgb[d] += w[c] * corner_rgb[d];
-      }
+      if constexpr(!Attributes::empty)
+        attribute_sources[c] = {corner, w[c]};
       ++c;
     }
     const out_vertex ov = add_vertex(out);
@@ -250,8 +245,8 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
       put(normal_map, ov, Out_vector(unit[0], unit[1], unit[2]));
       put(crease_normal_map, ov, Out_vector(normals.other[0], normals.other[1], normals.other[2]));
     }
-    if constexpr(wants_colors)
-      put(output_colors, ov, from_rgb<Out_color>(rgb));
+    if constexpr(!Attributes::empty)
+      attributes.put_mixed(ov, attribute_sources);
     vertex_of[v] = ov;
     ++number_of_vertices;
   }

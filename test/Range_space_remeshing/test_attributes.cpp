@@ -1,0 +1,238 @@
+// Vertex attributes carried to the output (internal/Vertex_attributes.h): texture
+// coordinates (`vertex_texture_map`) and user maps (`vertex_attribute_maps`).
+//
+// Two kinds of checks:
+// * exact ones, with the input's positions as the attribute: a position is linear on
+//   the flat input triangles and the dual with the average placement puts a vertex at
+//   the weighted mean of the same corners, so an output vertex's attribute must be its
+//   own position (up to rounding) if and only if the weights and the corners they go
+//   with are right;
+// * analytic ones, with the spherical texture coordinates of a sphere, compared with
+//   the analytic UVs of the output points away from the seam and the poles, within
+//   the interpolation error bound of the input's edge length (primal) and, after the
+//   collapse and the relaxation moved the vertices, a bound from the cell size.
+#include "test_support.h"
+
+#include <CGAL/Range_space_remeshing/dualize.h>
+#include <CGAL/Range_space_remeshing/remesh.h>
+
+#include <CGAL/boost/graph/Euler_operations.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+#include <vector>
+
+using namespace test;
+namespace params = RSR::parameters;
+using UV = K::Point_2;
+using Vertex = Mesh::Vertex_index;
+
+/// The spherical texture coordinates of the direction of p.
+UV analytic_uv(const Point& p)
+{
+  const double r = std::sqrt(CGAL::to_double((p - CGAL::ORIGIN).squared_length()));
+  return UV(std::atan2(p.y(), p.x()) / (2 * CGAL_PI) + 0.5, std::acos(p.z() / r) / CGAL_PI);
+}
+
+/// The input's UVs, one per vertex.
+Mesh::Property_map<Vertex, UV> add_uvs(Mesh& m)
+{
+  auto uvs = m.add_property_map<Vertex, UV>("v:uv").first;
+  for(Vertex v : vertices(m))
+    uvs[v] = analytic_uv(m.point(v));
+  return uvs;
+}
+
+double longest_edge(const Mesh& m)
+{
+  double longest = 0;
+  for(auto e : edges(m))
+    longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(m.point(source(e, m)), m.point(target(e, m)))));
+  return longest;
+}
+
+double distance_to_axis(const Point& p) { return std::sqrt(p.x() * p.x() + p.y() * p.y()); }
+
+/// Whether the input triangles within `reach` of p may straddle the seam (the
+/// half-plane y = 0, x <= 0, where u jumps from 1 to 0) or come near the poles
+/// (distance to the z axis below 3 reach, where the bounds below blow up).
+bool near_seam_or_pole(const Point& p, double reach)
+{
+  return (p.x() <= reach && std::abs(p.y()) <= reach) || distance_to_axis(p) < 3 * reach;
+}
+
+/// Largest error of the output UVs against the analytic ones, each divided by its
+/// bound `bound(p)`: at most 1 if every UV is within its bound. Counts the vertices
+/// compared in `compared`.
+template <class UVMap, class Bound>
+double worst_uv_error_ratio(const Mesh& out, UVMap uvs, double reach, const Bound& bound, std::size_t& compared)
+{
+  double worst = 0;
+  compared = 0;
+  for(Vertex v : vertices(out)) {
+    const Point& p = out.point(v);
+    if(near_seam_or_pole(p, reach))
+      continue;
+    const UV expected = analytic_uv(p), got = get(uvs, v);
+    const double error = (std::max)(std::abs(got.x() - expected.x()), std::abs(got.y() - expected.y()));
+    worst = (std::max)(worst, error / bound(p));
+    ++compared;
+  }
+  return worst;
+}
+
+/// The largest distance between the attribute `carried` of an output vertex and its
+/// position, over the output.
+template <class PointMap>
+double worst_position_mismatch(const Mesh& out, PointMap carried)
+{
+  double worst = 0;
+  for(Vertex v : vertices(out))
+    worst = (std::max)(worst, std::sqrt(CGAL::squared_distance(get(carried, v), out.point(v))));
+  return worst;
+}
+
+// Linear interpolation over a triangle of f with Hessian norm at most M errs by at most
+// M e^2 / 2 at a point within e of every corner (Taylor at the point: the gradient
+// terms cancel in the barycentric sum). For u = atan2(y, x) / 2pi the Hessian norm is
+// 1 / (2 pi rho^2), rho the distance to the z axis; for v = theta / pi it is at most
+// 2 / (pi r rho) <= 2 / (pi rho^2) near the unit sphere; over the triangle rho >= rho(p) - e.
+double primal_uv_bound(const Point& p, double e)
+{
+  const double rho = distance_to_axis(p) - e;
+  return (2 / (CGAL_PI * rho * rho)) * e * e / 2;
+}
+
+/// Primal: UVs (a CGAL 2-D point) within the interpolation bound, and the positions
+/// carried as a user attribute (CGAL 3-D points, with a second, std::array one) equal
+/// to the output points.
+void test_primal()
+{
+  Mesh sphere = make_sphere(1.0, 5);
+  const auto uvs = add_uvs(sphere);
+  const double e = longest_edge(sphere);
+  auto positions = std::make_tuple(sphere.points(), sphere.add_property_map<Vertex, std::array<double, 3>>("v:a").first);
+  for(Vertex v : vertices(sphere))
+    std::get<1>(positions)[v] = {{sphere.point(v).x(), sphere.point(v).y(), sphere.point(v).z()}};
+
+  Mesh out;
+  auto out_uvs = out.add_property_map<Vertex, UV>("v:uv").first;
+  auto out_points = out.add_property_map<Vertex, Point>("v:carried_point").first;
+  auto out_arrays = out.add_property_map<Vertex, std::array<double, 3>>("v:carried_array").first;
+  RSR::primal_remesh(sphere, out, params::grid_spacing(0.07).vertex_texture_map(uvs).vertex_attribute_maps(positions),
+                     params::vertex_texture_map(out_uvs).vertex_attribute_maps(std::make_tuple(out_points, out_arrays)));
+  CHECK(num_vertices(out) > 1000);
+
+  const double position_error = worst_position_mismatch(out, out_points);
+  double array_error = 0;
+  for(Vertex v : vertices(out))
+    array_error = (std::max)(array_error, std::abs(out_arrays[v][0] - out.point(v).x()) +
+                                              std::abs(out_arrays[v][1] - out.point(v).y()) +
+                                              std::abs(out_arrays[v][2] - out.point(v).z()));
+  std::size_t compared = 0;
+  const double ratio = worst_uv_error_ratio(out, out_uvs, e, [e](const Point& p) { return primal_uv_bound(p, e); },
+                                            compared);
+  std::cout << "primal: " << num_vertices(out) << " vertices, input edge " << e << ", position carried off by "
+            << position_error << " (array " << array_error << "), UV error / bound " << ratio << " over "
+            << compared << " vertices" << std::endl;
+  CHECK(position_error < 1e-12);
+  CHECK(array_error < 1e-12);
+  CHECK(compared > num_vertices(out) / 2);
+  CHECK(ratio <= 1);
+}
+
+/// The sphere without the faces below z = -0.5: a border for the dual's chain vertices.
+Mesh make_cap()
+{
+  Mesh m = make_sphere(1.0, 4);
+  std::vector<Mesh::Face_index> below;
+  for(auto f : faces(m)) {
+    bool all_below = true;
+    for(Vertex v : CGAL::vertices_around_face(halfedge(f, m), m))
+      all_below = all_below && m.point(v).z() < -0.5;
+    if(all_below)
+      below.push_back(f);
+  }
+  for(auto f : below)
+    CGAL::Euler::remove_face(halfedge(f, m), m);
+  m.collect_garbage();
+  return m;
+}
+
+/// Dual: with the average placement, a dual vertex is the weighted mean of the primal
+/// vertices whose attributes it mixes (face corners, or the ends of a border edge).
+void test_dual()
+{
+  for(const bool with_border : {false, true}) {
+    const Mesh input = with_border ? make_cap() : make_sphere(1.0, 4);
+    Mesh primal, quads;
+    RSR::primal_remesh(input, primal, params::grid_spacing(0.09));
+    auto carried = quads.add_property_map<Vertex, Point>("v:carried_point").first;
+    const auto stats = RSR::dualize(primal, quads,
+                                    params::dual_placement(RSR::Dual_placement::AVERAGE).vertex_attribute_maps(primal.points()),
+                                    params::vertex_attribute_maps(carried));
+    std::size_t border_vertices = 0;
+    for(Vertex v : vertices(quads))
+      border_vertices += bool(CGAL::is_border(v, quads));
+    const double error = worst_position_mismatch(quads, carried);
+    std::cout << "dual" << (with_border ? " with border" : "") << ": " << stats.dual_vertices << " vertices ("
+              << border_vertices << " on the border), position carried off by " << error << std::endl;
+    CHECK(num_vertices(quads) > 100);
+    CHECK(with_border == (border_vertices > 0));
+    CHECK(error < 1e-12);
+  }
+}
+
+/// remesh(): without collapse and relaxation, with the average placement, the
+/// positions carried through the primal and the dual are again the output points;
+/// with the whole pipeline the UVs are within a bound from the cell size.
+void test_remesh()
+{
+  Mesh sphere = make_sphere(1.0, 5);
+  const auto uvs = add_uvs(sphere);
+  const double e = longest_edge(sphere);
+  {
+    Mesh quads;
+    auto carried = quads.add_property_map<Vertex, Point>("v:carried_point").first;
+    RSR::remesh(sphere, quads,
+                params::grid_spacing(0.07).dual_placement(RSR::Dual_placement::AVERAGE).quad_collapse(false)
+                    .number_of_relaxation_steps(0).vertex_attribute_maps(sphere.points()),
+                params::vertex_attribute_maps(carried));
+    const double error = worst_position_mismatch(quads, carried);
+    std::cout << "remesh, average placement, no collapse or relaxation: position carried off by " << error
+              << std::endl;
+    CHECK(num_vertices(quads) > 500);
+    CHECK(error < 1e-12);
+  }
+  // A dual vertex carries the mean of its primal face's UVs, that face lying in one
+  // grid cell (diameter sqrt(3) h); the placement, the collapse (to a point of the
+  // quad's diagonal) and the relaxation (on tangent planes) move it within about a
+  // cell diagonal more. The UV then differs from the analytic one at its point by the
+  // gradient (at most 1 / (pi rho) for u and v) times that distance d = 2 sqrt(3) h,
+  // plus the primal's interpolation error.
+  const double h = 0.05;
+  Mesh quads;
+  auto out_uvs = quads.add_property_map<Vertex, UV>("v:uv").first;
+  const auto stats = RSR::remesh(sphere, quads, params::grid_spacing(h).vertex_texture_map(uvs),
+                                 params::vertex_texture_map(out_uvs));
+  const double d = 2 * std::sqrt(3.) * h;
+  auto bound = [&](const Point& p) {
+    return d / (CGAL_PI * (distance_to_axis(p) - d)) + primal_uv_bound(p, e);
+  };
+  std::size_t compared = 0;
+  const double ratio = worst_uv_error_ratio(quads, out_uvs, d, bound, compared);
+  std::cout << "remesh: " << num_vertices(quads) << " vertices, " << stats.collapse.collapsed_quads
+            << " collapses, UV error / bound " << ratio << " over " << compared << " vertices" << std::endl;
+  CHECK(num_vertices(quads) > 500);
+  CHECK(compared > num_vertices(quads) / 2);
+  CHECK(ratio <= 1);
+}
+
+int main()
+{
+  test_primal();
+  test_dual();
+  test_remesh();
+  return report("test_attributes");
+}
