@@ -398,11 +398,10 @@ void check_grid(double cell_size, const Point_d& origin)
       throw Remeshing_error("the grid origin must be finite", Remeshing_error::Kind::BAD_PARAMETER);
 }
 
-// An error of a refined run, past the first: the refinement could not finish.
+// The error of a refined run (past the first), for which the refinement could not
+// finish; an error of the first run, or a cancel, is rethrown as it is.
 inline Remeshing_error refinement_failure(const Remeshing_error& error, std::size_t refinements, double h)
 {
-  if(refinements == 0 || error.kind() == Remeshing_error::Kind::CANCELLED)
-    return error;
   return Remeshing_error("preserve_topology could not reach a cell size without topology defects (" +
                              std::to_string(refinements) + " refinements, to cell size " + std::to_string(h) +
                              "): " + error.what(),
@@ -495,6 +494,8 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_total).count();
       return stats;
     } catch(const Remeshing_error& error) {
+      if(refinements == 0 || error.kind() == Remeshing_error::Kind::CANCELLED)
+        throw; // as it is: a Remeshing_cancelled stays one
       throw refinement_failure(error, refinements, h);
     }
   }
