@@ -24,7 +24,6 @@
 #include <cstdint>
 #include <functional>
 #include <iostream>
-#include <map>
 #include <optional>
 #include <sstream>
 #include <string>
@@ -44,17 +43,8 @@ struct Input
   std::size_t uv_seam_vertices = 0; // vertices with several UVs: the UVs were dropped
 };
 
-using Position = std::array<double, 3>;
-struct Position_hash
-{
-  std::size_t operator()(const Position& p) const
-  {
-    std::size_t h = 0;
-    for(double x : p)
-      h = h * 1000003u ^ std::hash<double>()(x);
-    return h;
-  }
-};
+using rsr_io::Position;
+using rsr_io::Position_hash;
 /// The first point of the soup at each position.
 using Point_at = std::unordered_map<Position, std::size_t, Position_hash>;
 
@@ -184,7 +174,7 @@ void copy_by_position(const Mesh& from, const std::optional<Map>& map, const std
   if(!map)
     return;
   using Value = typename boost::property_traits<Map>::value_type;
-  std::map<Position, Value> by_position;
+  std::unordered_map<Position, Value, Position_hash> by_position;
   for(auto v : vertices(from))
     by_position[{{from.point(v).x(), from.point(v).y(), from.point(v).z()}}] = (*map)[v];
   auto copied = to.add_property_map<Mesh::Vertex_index, Value>(name).first;

@@ -20,6 +20,10 @@
 #ifndef RANGE_SPACE_REMESHING_TOOLS_MESH_FILE_READER_H
 #define RANGE_SPACE_REMESHING_TOOLS_MESH_FILE_READER_H
 
+#include "mesh_formats.h"
+
+#include <boost/container_hash/hash.hpp>
+
 #include <algorithm>
 #include <array>
 #include <charconv>
@@ -45,6 +49,11 @@ struct Read_error : std::runtime_error
 {
   using std::runtime_error::runtime_error;
 };
+
+/// A point's coordinates as a hash key. Boost's hash gives 0 and -0 one value, as
+/// the key's == (which holds between them) requires.
+using Position = std::array<double, 3>;
+using Position_hash = boost::hash<Position>;
 
 /// What a file holds: points, polygons (indices into `points`, unchecked) and, if
 /// the file has vertex colours, one colour per point (red, green, blue in 0..255);
@@ -768,18 +777,8 @@ public:
   }
 
 private:
-  struct Hash
-  {
-    std::size_t operator()(const std::array<double, 3>& p) const
-    {
-      std::size_t h = 0;
-      for(double x : p)
-        h = h * 0x9E3779B97F4A7C15ull ^ std::hash<double>()(x);
-      return h;
-    }
-  };
   std::vector<std::array<double, 3>>& points_;
-  std::unordered_map<std::array<double, 3>, std::size_t, Hash> index_;
+  std::unordered_map<Position, std::size_t, Position_hash> index_;
 };
 
 /// The triangles of an STL file, their corners at the same position joined.
@@ -832,39 +831,25 @@ inline Polygon_soup read_stl(std::string_view text, const std::string& name)
 
 // ------------------------------------------------------------------------ entry
 
-/// The extension of `path`, lower case, without the dot ("" if none).
-inline std::string extension_of(const std::string& path)
-{
-  const auto dot = path.find_last_of('.');
-  const auto slash = path.find_last_of('/');
-  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
-    return "";
-  std::string ext = path.substr(dot + 1);
-  for(char& c : ext)
-    c = char(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
-/// The soup in `text`, a file of format `extension` ("off", "ply", "obj", "stl");
-/// `name` names it in messages. Throws Read_error.
+/// The soup in `text`, a file of the format with extension `extension` (see
+/// mesh_formats.h); `name` names it in messages. Throws Read_error.
 inline Polygon_soup parse_mesh(std::string_view text, const std::string& extension, const std::string& name)
 {
   if(text.empty())
     throw Read_error(name + " is empty");
-  if(extension == "off")
-    return read_off(text, name);
-  if(extension == "ply")
-    return read_ply(text, name);
-  if(extension == "obj")
-    return read_obj(text, name);
-  if(extension == "stl")
-    return read_stl(text, name);
-  throw Read_error(name + ": unsupported format (use .off .obj .ply .stl)");
+  const auto format = format_with_extension(extension);
+  if(!format)
+    throw Read_error(name + ": unsupported format (use " + supported_extensions() + ")");
+  switch(format->format) {
+  case Mesh_format::OFF: return read_off(text, name);
+  case Mesh_format::PLY: return read_ply(text, name);
+  case Mesh_format::OBJ: return read_obj(text, name);
+  case Mesh_format::STL: return read_stl(text, name);
+  }
+  throw Read_error(name + ": unsupported format"); // not reached: every format is above
 }
 
 } // namespace internal
-
-using internal::extension_of;
 
 /// The soup in the file `path`, its format chosen by its extension. Throws Read_error.
 inline Polygon_soup read_mesh_file(const std::string& path)

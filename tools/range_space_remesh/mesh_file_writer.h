@@ -10,7 +10,7 @@
 #ifndef RANGE_SPACE_REMESHING_TOOLS_MESH_FILE_WRITER_H
 #define RANGE_SPACE_REMESHING_TOOLS_MESH_FILE_WRITER_H
 
-#include "mesh_file_reader.h" // extension_of
+#include "mesh_formats.h"
 
 #include <CGAL/IO/Color.h>
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -247,33 +247,37 @@ Mesh with_st_properties(const Mesh& mesh, const UVMap& uvs)
 
 } // namespace internal
 
-/// Writes `mesh` to `out` in the format of the extension `ext` ("off", "obj", "ply",
-/// "stl"), with the vertex colours `colors` (if not null) where the format stores
-/// them (OFF, PLY) and the texture coordinates `uvs` (if not null) where it stores
-/// them (PLY as s and t, OBJ as vt); faces are split into triangles for STL. False on
-/// a stream error.
+/// Writes `mesh` to `out` in the format with extension `ext` (see mesh_formats.h),
+/// with the vertex colours `colors` (if not null) where the format stores them (OFF,
+/// PLY) and the texture coordinates `uvs` (if not null) where it stores them (PLY as s
+/// and t, OBJ as vt); faces are split into triangles for STL. False on a stream error
+/// or an unknown format.
 template <class Mesh, class ColorMap, class UVMap = internal::No_uvs>
 bool write_mesh(std::ostream& out, const Mesh& mesh, const std::string& ext, const ColorMap* colors,
                 const Write_options& options, const UVMap* uvs = nullptr)
 {
+  const auto format = format_with_extension(ext);
+  if(!format)
+    return false;
   const auto precision = CGAL::parameters::stream_precision(options.precision);
-  const bool binary = options.binary && (ext == "ply" || ext == "stl");
-  CGAL::IO::set_mode(out, binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
-  if(ext == "stl")
-    return CGAL::IO::write_STL(out, internal::triangulated_copy(mesh), precision);
+  CGAL::IO::set_mode(out, options.binary && format->has_binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
   if constexpr(!std::is_same<UVMap, internal::No_uvs>::value) {
-    if(ext == "obj" && uvs)
+    if(uvs && format->format == Mesh_format::OBJ)
       return internal::write_obj_with_uvs(out, mesh, *uvs, options.precision);
-    if(ext == "ply" && uvs)
+    if(uvs && format->format == Mesh_format::PLY)
       return write_mesh(out, internal::with_st_properties(mesh, *uvs), ext, colors, options);
   }
-  if(ext == "obj")
-    return CGAL::IO::write_OBJ(out, mesh, precision);
-  if(ext == "off")
+  switch(format->format) {
+  case Mesh_format::STL: return CGAL::IO::write_STL(out, internal::triangulated_copy(mesh), precision);
+  case Mesh_format::OBJ: return CGAL::IO::write_OBJ(out, mesh, precision);
+  case Mesh_format::OFF:
     return colors ? CGAL::IO::write_OFF(out, mesh, precision.vertex_color_map(*colors))
                   : CGAL::IO::write_OFF(out, mesh, precision);
-  return colors ? CGAL::IO::write_PLY(out, mesh, "", precision.vertex_color_map(*colors))
-                : CGAL::IO::write_PLY(out, mesh, "", precision);
+  case Mesh_format::PLY:
+    return colors ? CGAL::IO::write_PLY(out, mesh, "", precision.vertex_color_map(*colors))
+                  : CGAL::IO::write_PLY(out, mesh, "", precision);
+  }
+  return false; // not reached: every format is above
 }
 
 /// The files a run writes, each first under a temporary name; `commit()` renames
@@ -294,9 +298,10 @@ public:
            const UVMap* uvs = nullptr)
   {
     const std::string ext = extension_of(path);
-    if(ext != "off" && ext != "obj" && ext != "ply" && ext != "stl")
-      throw Write_error("cannot write '" + path + "': unsupported format (use .off .obj .ply .stl)");
-    if(ext == "stl")
+    const auto format = format_with_extension(ext);
+    if(!format)
+      throw Write_error("cannot write '" + path + "': unsupported format (use " + supported_extensions() + ")");
+    if(!format->stores_polygons)
       if(const std::size_t joined = internal::vertices_joined_by_stl(mesh, options.binary))
         throw Write_error("cannot write '" + path + "': " + std::to_string(joined) +
                           (joined == 1 ? " vertex of the mesh would coincide with another"

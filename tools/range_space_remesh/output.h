@@ -37,11 +37,7 @@ private:
   std::streambuf* saved_;
 };
 
-inline bool is_supported_format(const std::string& path)
-{
-  const std::string ext = rsr_io::extension_of(path);
-  return ext == "off" || ext == "obj" || ext == "ply" || ext == "stl";
-}
+inline bool is_supported_format(const std::string& path) { return rsr_io::format_of(path).has_value(); }
 
 
 /// Whether two paths name the same file: the same name, the same canonical path (the
@@ -74,9 +70,9 @@ inline void check_output_paths(const Options& options)
 inline void check_output_names(const Options& options)
 {
   if(!is_supported_format(options.output))
-    fail("cannot write " + quote(options.output) + ": unsupported format (use .off .obj .ply .stl)");
+    fail("cannot write " + quote(options.output) + ": unsupported format (use " + rsr_io::supported_extensions() + ")");
   if(!options.topology_report.empty() && !is_supported_format(options.topology_report))
-    fail("cannot write " + quote(options.topology_report) + ": unsupported format (use .off .obj .ply .stl)");
+    fail("cannot write " + quote(options.topology_report) + ": unsupported format (use " + rsr_io::supported_extensions() + ")");
   check_output_paths(options);
 }
 
