@@ -6,12 +6,9 @@
 #ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUAD_COLLAPSER_H
 #define CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUAD_COLLAPSER_H
 
-// The quad collapse of section 6 of the paper, on any MutableFaceGraph. A quad
-// (a, b, c, d) with halfedges h0 = a->b, h1 = b->c, h2 = c->d, h3 = d->a is collapsed
-// along (a, c) by merging c into a: h0 takes the place of opposite(h1) and h3 the
-// place of opposite(h2), so edges a-b, b-c become one and so do c-d, d-a; the quad,
-// the edges of h1 and h2, and c are removed. Only pointers are rewired: no new
-// element, so descriptors and indices of the survivors stay valid.
+// The quad collapse of section 6 of the paper, on any MutableFaceGraph: which quads
+// to collapse, which edges to rotate, in which order (the operations themselves and
+// their tests are Quad_operations.h's).
 //
 // The collapses are interleaved with edge rotations (Tarini et al., Practical quad mesh
 // simplification, 2010): the edge u-v between the quads (u, v, f1, f2) and
@@ -24,10 +21,8 @@
 
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
-#include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
-#include <CGAL/Range_space_remeshing/internal/Polygon_kernel.h>
-#include <CGAL/Range_space_remeshing/internal/Quadric.h>
+#include <CGAL/Range_space_remeshing/internal/Quad_operations.h>
 
 #include <CGAL/boost/graph/iterator.h>
 
@@ -44,12 +39,34 @@ namespace internal {
 template <class PolygonMesh, class VertexPointMap, class TangentPlanesMap, class ConstrainedMap,
           class VertexIndexMap, class FaceIndexMap>
 class Quad_collapser
+    : Quad_operations<PolygonMesh, VertexPointMap, TangentPlanesMap, ConstrainedMap, VertexIndexMap, FaceIndexMap>
 {
-  using GT = boost::graph_traits<PolygonMesh>;
-  using vertex_descriptor = typename GT::vertex_descriptor;
-  using halfedge_descriptor = typename GT::halfedge_descriptor;
-  using face_descriptor = typename GT::face_descriptor;
-  using Point = typename boost::property_traits<VertexPointMap>::value_type;
+  using Operations =
+      Quad_operations<PolygonMesh, VertexPointMap, TangentPlanesMap, ConstrainedMap, VertexIndexMap, FaceIndexMap>;
+  using typename Operations::GT;
+  using typename Operations::vertex_descriptor;
+  using typename Operations::halfedge_descriptor;
+  using typename Operations::face_descriptor;
+  using Operations::mesh_;
+  using Operations::face_index_;
+  using Operations::removed_faces_;
+  using Operations::index;
+  using Operations::position;
+  using Operations::valence;
+  using Operations::on_border;
+  using Operations::regular_valence;
+  using Operations::lowest_valence;
+  using Operations::null_halfedge;
+  using Operations::is_quad;
+  using Operations::is_live_quad;
+  using Operations::hexagon_around;
+  using Operations::rotation_keeps_manifold;
+  using Operations::rotation_keeps_faces_unfolded;
+  using Operations::keeps_manifold;
+  using Operations::merged_position;
+  using Operations::keeps_faces_unfolded;
+  using Operations::remove_doublets;
+  using Operations::remove_unlinked_elements;
 
   /// A quad worth collapsing, by how much its better diagonal lowers the energy; or,
   /// with an `edge` (a halfedge of `quad`), an edge worth rotating.
@@ -69,24 +86,10 @@ public:
   Quad_collapser(PolygonMesh& mesh, VertexPointMap vpm, TangentPlanesMap planes,
                  ConstrainedMap constrained, VertexIndexMap vertex_index, FaceIndexMap face_index,
                  std::vector<Vec3>& normals, bool rotate_edges)
-    : rotate_edges_(rotate_edges), mesh_(mesh), vpm_(vpm), planes_(planes), constrained_(constrained),
-      vertex_index_(vertex_index), normals_(normals), face_index_(face_index),
-      removed_faces_(index_bound(faces(mesh), face_index), 0), is_quad_(removed_faces_.size(), 0),
+    : Operations(mesh, vpm, planes, constrained, vertex_index, face_index, normals), rotate_edges_(rotate_edges),
       touched_in_pass_(removed_faces_.size(), 0), changed_in_walk_(removed_faces_.size(), 0),
-      valences_(index_bound(vertices(mesh), vertex_index)),
-      on_border_(valences_.size(), 0), nearby_in_stamp_(removed_faces_.size(), 0)
-  {
-    for(face_descriptor f : faces(mesh_))
-      is_quad_[get(face_index_, f)] = degree(f, mesh_) == 4;
-    for(vertex_descriptor v : vertices(mesh_)) {
-      valences_[index(v)] = int(degree(v, mesh_));
-      on_border_[index(v)] = bool(is_border(v, mesh_));
-      // a border vertex keeps its border halfedge, which no collapse removes (see
-      // set_inner_halfedge()); meshes from elsewhere need not point there yet
-      if(on_border_[index(v)])
-        set_halfedge(v, *is_border(v, mesh_), mesh_);
-    }
-  }
+      nearby_in_stamp_(removed_faces_.size(), 0)
+  {}
 
   /// Passes over the quads: the first over all of them, each next one over the quads
   /// whose vertex valences the previous pass changed (the others' energies are as
@@ -152,23 +155,6 @@ private:
     remove_unlinked_elements();
     return stats;
   }
-
-private:
-  std::size_t index(vertex_descriptor v) const { return get(vertex_index_, v); }
-  int valence(vertex_descriptor v) const { return valences_[index(v)]; }
-  // Border vertices are never moved nor merged; a regular one has valence 3 (two border
-  // edges and one inside), and may go down to 2 (a corner of the surface).
-  bool on_border(vertex_descriptor v) const { return on_border_[index(v)]; }
-  int regular_valence(vertex_descriptor v) const { return on_border(v) ? 3 : 4; }
-  int lowest_valence(vertex_descriptor v) const { return on_border(v) ? 2 : 3; }
-  /// Sets the halfedge of v, unless v is on the border: its halfedge stays the border one.
-  void set_inner_halfedge(vertex_descriptor v, halfedge_descriptor h)
-  {
-    if(!on_border(v))
-      set_halfedge(v, h, mesh_);
-  }
-  Vec3 position(vertex_descriptor v) const { return to_vec3(get(vpm_, v)); }
-  static halfedge_descriptor null_halfedge() { return GT::null_halfedge(); }
 
   /// The collapses and rotations of the quads of `quads` that lower the valence energy
   /// (the caller orders them).
@@ -366,21 +352,6 @@ private:
   /// Decrease of sum (valence - 4)^2 over a, b, c, d when c is merged into a.
   int energy_decrease(halfedge_descriptor h0) const { return corners_from(h0).collapse_decrease(0); }
 
-  /// The six halfedges around the two quads of the edge of h (u -> v), from v on:
-  /// hexagon[i] goes from corner i to corner i + 1, corner 0 is v and corner 3 is u.
-  /// False where the edge is not between two distinct quads.
-  bool hexagon_around(halfedge_descriptor h, std::array<halfedge_descriptor, 6>& hexagon) const
-  {
-    const halfedge_descriptor o = opposite(h, mesh_);
-    if(is_border(h, mesh_) || is_border(o, mesh_) || face(h, mesh_) == face(o, mesh_) ||
-       !is_quad(face(h, mesh_)) || !is_quad(face(o, mesh_)))
-      return false;
-    hexagon[0] = next(h, mesh_);
-    hexagon[3] = next(o, mesh_);
-    for(int i : {1, 2, 4, 5})
-      hexagon[i] = next(hexagon[i - 1], mesh_);
-    return true;
-  }
 
   /// The better rotation of an edge: its hexagon, k (1 or 2: the new edge joins corners
   /// k and k + 3) and the decrease of the valence energy (<= 0: none lowers it).
@@ -453,10 +424,6 @@ private:
     return true;
   }
 
-  // No operation changes the degree of a face it keeps (see is_quad_).
-  bool is_quad(face_descriptor f) const { return is_quad_[get(face_index_, f)]; }
-  bool is_live_quad(face_descriptor f) const { return !removed_faces_[get(face_index_, f)] && is_quad(f); }
-
   /// Collapses the quad along its better diagonal if that lowers the energy, keeps a
   /// valid manifold and folds no face over. Returns whether it did; counts the collapse
   /// or the refusal in `stats`.
@@ -477,6 +444,25 @@ private:
     collapse(h0, position);
     ++stats.collapsed_quads;
     return true;
+  }
+
+  /// The operations, each queueing the faces around the vertices it changed.
+  void rotate(halfedge_descriptor h, const std::array<halfedge_descriptor, 6>& hexagon, int k)
+  {
+    const std::array<vertex_descriptor, 4> changed = {source(h, mesh_), target(h, mesh_), source(hexagon[k], mesh_),
+                                                      source(hexagon[(k + 3) % 6], mesh_)};
+    Operations::rotate(h, hexagon, k);
+    for(vertex_descriptor w : changed)
+      touch_faces_around(w);
+  }
+
+  void collapse(halfedge_descriptor h0, const Vec3& merged)
+  {
+    const halfedge_descriptor h1 = next(h0, mesh_), h2 = next(h1, mesh_);
+    const std::array<vertex_descriptor, 3> changed = {source(h0, mesh_), target(h0, mesh_), target(h2, mesh_)};
+    Operations::collapse(h0, merged);
+    for(vertex_descriptor w : changed)
+      touch_faces_around(w);
   }
 
   /// Once no operation lowers the energy by itself, what is left are mostly dipoles: a
@@ -666,326 +652,7 @@ private:
     return candidate.edge != null_halfedge() ? try_rotation(candidate, stats) : try_collapse(candidate.quad, stats);
   }
 
-  /// The hexagon's corners are six distinct vertices, the new edge's ends are not
-  /// joined yet, u and v keep their lowest valence, and neither is constrained (its
-  /// edges may be a feature the caller keeps).
-  bool rotation_keeps_manifold(halfedge_descriptor h, const std::array<halfedge_descriptor, 6>& hexagon,
-                               int k) const
-  {
-    const vertex_descriptor u = source(h, mesh_), v = target(h, mesh_);
-    if(get(constrained_, u) || get(constrained_, v) || valence(u) <= lowest_valence(u) ||
-       valence(v) <= lowest_valence(v))
-      return false;
-    std::array<vertex_descriptor, 6> corners;
-    for(int i = 0; i < 6; ++i)
-      corners[i] = source(hexagon[i], mesh_);
-    for(int i = 0; i < 6; ++i)
-      for(int j = i + 1; j < 6; ++j)
-        if(corners[i] == corners[j])
-          return false;
-    const vertex_descriptor p = corners[k], q = corners[k + 3];
-    for(vertex_descriptor w : CGAL::vertices_around_target(halfedge(p, mesh_), mesh_))
-      if(w == q)
-        return false;
-    return true;
-  }
-
-  /// Both new quads face like the two old ones together, and, as in a collapse, stay
-  /// convex where both old ones were (else each fan from the new edge turns like its quad).
-  bool rotation_keeps_faces_unfolded(const std::array<halfedge_descriptor, 6>& hexagon, int k) const
-  {
-    corners_.clear();
-    for(int i = 0; i < 6; ++i)
-      corners_.push_back(position(source(hexagon[i], mesh_)));
-    const Vec3 normal_before = newell_normal(corners_); // the hexagon's: both old quads'
-    std::vector<Vec3>& quad = quad_corners_;
-    auto quad_from = [&](int first) -> const std::vector<Vec3>& {
-      quad.clear();
-      for(int i = 0; i < 4; ++i)
-        quad.push_back(corners_[(first + i) % 6]);
-      return quad;
-    };
-    const bool were_convex = is_convex(quad_from(0), newell_normal(quad_from(0))) &&
-                             is_convex(quad_from(3), newell_normal(quad_from(3)));
-    return turns_like_before(quad_from(k), normal_before, were_convex) &&
-           turns_like_before(quad_from(k + 3), normal_before, were_convex);
-  }
-
-  /// The rule of both operations for a changed face: its normal keeps the direction of
-  /// `normal_before`, and it stays convex if it was, else every triangle of its fan from
-  /// the first corner turns like it.
-  static bool turns_like_before(const std::vector<Vec3>& polygon, const Vec3& normal_before, bool was_convex)
-  {
-    const Vec3 normal = newell_normal(polygon);
-    return dot(normal, normal_before) > 0 &&
-           (was_convex ? is_convex(polygon, normal) : fan_turns_with(polygon, normal));
-  }
-
-  /// Turns the edge of h (u -> v) to join hexagon corners k and k + 3 (mod 6): h's face
-  /// becomes corners k .. k + 3, the opposite face corners k + 3 .. k + 6. (k = 4 or 5
-  /// gives the diagonal of k = 1 or 2 with the two faces the other way round.)
-  void rotate(halfedge_descriptor h, const std::array<halfedge_descriptor, 6>& hexagon, int k)
-  {
-    const halfedge_descriptor o = opposite(h, mesh_);
-    const vertex_descriptor u = source(h, mesh_), v = target(h, mesh_);
-    const vertex_descriptor p = source(hexagon[k], mesh_), q = source(hexagon[(k + 3) % 6], mesh_);
-    auto link = [this](halfedge_descriptor diagonal, const halfedge_descriptor* sides) {
-      const face_descriptor f = face(diagonal, mesh_);
-      set_next(diagonal, sides[0], mesh_);
-      set_next(sides[0], sides[1], mesh_);
-      set_next(sides[1], sides[2], mesh_);
-      set_next(sides[2], diagonal, mesh_);
-      for(int i = 0; i < 3; ++i)
-        set_face(sides[i], f, mesh_);
-      set_halfedge(f, diagonal, mesh_);
-    };
-    const std::array<halfedge_descriptor, 6> from_k = {hexagon[k], hexagon[(k + 1) % 6], hexagon[(k + 2) % 6],
-                                                       hexagon[(k + 3) % 6], hexagon[(k + 4) % 6],
-                                                       hexagon[(k + 5) % 6]};
-    if(halfedge(u, mesh_) == o)
-      set_inner_halfedge(u, hexagon[2]); // hexagon[2] ends at corner 3, u
-    if(halfedge(v, mesh_) == h)
-      set_inner_halfedge(v, hexagon[5]); // hexagon[5] ends at corner 0, v
-    set_target(h, p, mesh_);
-    set_target(o, q, mesh_);
-    link(h, &from_k[0]);
-    link(o, &from_k[3]);
-    --valences_[index(u)];
-    --valences_[index(v)];
-    ++valences_[index(p)];
-    ++valences_[index(q)];
-    for(vertex_descriptor w : {u, v, p, q})
-      touch_faces_around(w);
-  }
-
-  /// Link condition for quads: the merged vertex has one disk of faces, no two edges
-  /// join the same vertices, no face visits a vertex twice, b and d keep valence 3.
-  bool keeps_manifold(halfedge_descriptor h0) const
-  {
-    const halfedge_descriptor h1 = next(h0, mesh_), h2 = next(h1, mesh_);
-    const vertex_descriptor a = source(h0, mesh_), b = target(h0, mesh_), c = target(h1, mesh_),
-                            d = target(h2, mesh_);
-    if(a == c || b == d || get(constrained_, a) || get(constrained_, c) || on_border(a) || on_border(c))
-      return false;
-    if(valence(b) <= lowest_valence(b) || valence(d) <= lowest_valence(d) || valence(a) < 3 || valence(c) < 3)
-      return false;
-    auto& around_a = around_a_;
-    around_a.clear();
-    for(vertex_descriptor w : CGAL::vertices_around_target(opposite(h0, mesh_), mesh_))
-      around_a.push_back(w);
-    for(vertex_descriptor w : CGAL::vertices_around_target(h1, mesh_))
-      if(w != b && w != d && std::find(around_a.begin(), around_a.end(), w) != around_a.end())
-        return false;
-    if(std::find(around_a.begin(), around_a.end(), c) != around_a.end())
-      return false;
-    const face_descriptor quad = face(h0, mesh_);
-    auto& faces_a = faces_a_;
-    faces_a.clear();
-    for(face_descriptor g : CGAL::faces_around_target(opposite(h0, mesh_), mesh_))
-      if(g != quad)
-        faces_a.push_back(g);
-    for(face_descriptor g : CGAL::faces_around_target(h1, mesh_))
-      if(g != quad && std::find(faces_a.begin(), faces_a.end(), g) != faces_a.end())
-        return false;
-    return true;
-  }
-
-  /// The paper's placement, generalised as in the relaxation: the midpoint of a and c
-  /// moved to the nearest minimiser of the distances to the union of their tangent
-  /// planes (along the normal in a smooth region, onto the line of a crease); on opened
-  /// creases, `merged_on_creases()`.
-  Vec3 merged_position(halfedge_descriptor h0) const
-  {
-    const vertex_descriptor a = source(h0, mesh_), c = target(next(h0, mesh_), mesh_);
-    const Vec3 pa = position(a), pc = position(c);
-    Vec3 mid = {{(pa[0] + pc[0]) / 2, (pa[1] + pc[1]) / 2, (pa[2] + pc[2]) / 2}};
-    if(merged_on_creases(get(planes_, a), pa, get(planes_, c), pc, mid, corners_, quad_corners_))
-      return mid;
-    Quadric quadric;
-    quadric.add_planes(get(planes_, a));
-    quadric.add_planes(get(planes_, c));
-    return Quadric_projection(quadric, quadric_truncation)(mid);
-  }
-
-  Vec3 merged_normal(vertex_descriptor a, vertex_descriptor c) const
-  {
-    const Vec3& na = normals_[index(a)];
-    const Vec3& nc = normals_[index(c)];
-    return normalized(Vec3{{na[0] + nc[0], na[1] + nc[1], na[2] + nc[2]}});
-  }
-
-  /// Whether every face around a and c (but the quad) stays unfolded once a and c are
-  /// one vertex at `merged`: its normal keeps its direction, a convex face stays
-  /// convex, and every triangle of the fan from the merged vertex turns like the face.
-  bool keeps_faces_unfolded(halfedge_descriptor h0, const Vec3& merged) const
-  {
-    const face_descriptor quad = face(h0, mesh_);
-    for(halfedge_descriptor around : {opposite(h0, mesh_), next(h0, mesh_)}) // targets a, c
-      for(halfedge_descriptor h : CGAL::halfedges_around_target(around, mesh_)) {
-        if(is_border(h, mesh_) || face(h, mesh_) == quad)
-          continue;
-        corners_.clear();
-        halfedge_descriptor g = h; // corners from the merged vertex on
-        do {
-          corners_.push_back(position(target(g, mesh_)));
-          g = next(g, mesh_);
-        } while(g != h);
-        const Vec3 normal_before = newell_normal(corners_);
-        const bool was_convex = is_convex(corners_, normal_before);
-        corners_.front() = merged;
-        if(!turns_like_before(corners_, normal_before, was_convex))
-          return false;
-      }
-    return true;
-  }
-
-  void collapse(halfedge_descriptor h0, const Vec3& merged)
-  {
-    const halfedge_descriptor h1 = next(h0, mesh_), h2 = next(h1, mesh_), h3 = next(h2, mesh_);
-    const halfedge_descriptor o1 = opposite(h1, mesh_), o2 = opposite(h2, mesh_);
-    const vertex_descriptor a = source(h0, mesh_), b = target(h0, mesh_), c = target(h1, mesh_),
-                            d = target(h2, mesh_);
-    const Vec3 normal = merged_normal(a, c);
-
-    std::vector<halfedge_descriptor>& into_c = into_c_;
-    into_c.clear();
-    for(halfedge_descriptor h : CGAL::halfedges_around_target(h1, mesh_))
-      if(h != h1 && h != o2)
-        into_c.push_back(h);
-    for(halfedge_descriptor h : into_c)
-      set_target(h, a, mesh_);
-    valences_[index(a)] += valences_[index(c)] - 2;
-    valences_[index(c)] = 0; // merged away
-    --valences_[index(b)];
-    --valences_[index(d)];
-
-    replace_in_face(o1, h0);
-    replace_in_face(o2, h3);
-    set_halfedge(a, opposite(h0, mesh_), mesh_);
-    set_inner_halfedge(b, h0);
-    set_inner_halfedge(d, opposite(h3, mesh_));
-
-    append_planes(a, c);
-    put(vpm_, a, Point(merged[0], merged[1], merged[2]));
-    normals_[index(a)] = normal;
-
-    const face_descriptor quad = face(h1, mesh_);
-    removed_faces_[get(face_index_, quad)] = true;
-    unlinked_.push_back({quad, h1, h2, c});
-    for(vertex_descriptor v : {a, b, d})
-      touch_faces_around(v);
-  }
-
-  /// Dissolves the vertices of valence 2 (doublets: two quads sharing two edges, as
-  /// the dual leaves where it joins faces) whose two faces are distinct quads: the two
-  /// become one quad. Refused where a neighbour would drop below valence 3, where the
-  /// merged face would visit a vertex twice, or where it would fold over.
-  std::size_t remove_doublets()
-  {
-    std::vector<vertex_descriptor> doublets;
-    for(vertex_descriptor v : vertices(mesh_))
-      if(valence(v) == 2 && !on_border(v))
-        doublets.push_back(v);
-    std::size_t removed = 0;
-    for(vertex_descriptor v : doublets) {
-      const halfedge_descriptor o2 = halfedge(v, mesh_);        // b -> v, in F
-      const halfedge_descriptor e1 = next(o2, mesh_);           // v -> a, in F
-      const halfedge_descriptor o1 = opposite(e1, mesh_);       // a -> v, in G
-      const halfedge_descriptor e2 = next(o1, mesh_);           // v -> b, in G
-      if(e2 != opposite(o2, mesh_) || is_border(o2, mesh_) || is_border(o1, mesh_))
-        continue;
-      const face_descriptor f = face(o2, mesh_), g = face(o1, mesh_);
-      if(f == g || !is_quad(f) || !is_quad(g))
-        continue;
-      const vertex_descriptor a = target(e1, mesh_), b = target(e2, mesh_);
-      const halfedge_descriptor a_x = next(e1, mesh_), x_b = prev(o2, mesh_);
-      const halfedge_descriptor b_y = next(e2, mesh_), y_a = prev(o1, mesh_);
-      if(a == b || target(a_x, mesh_) == target(b_y, mesh_) || valence(a) <= lowest_valence(a) ||
-         valence(b) <= lowest_valence(b) || get(constrained_, v))
-        continue;
-      // the merged quad (a, x, b, y) must turn like the two it replaces
-      corners_ = {position(a), position(target(a_x, mesh_)), position(b), position(target(b_y, mesh_))};
-      const Vec3 merged = newell_normal(corners_);
-      corners_ = {position(v), position(a), position(target(a_x, mesh_)), position(b)};
-      Vec3 before = newell_normal(corners_);
-      corners_ = {position(v), position(b), position(target(b_y, mesh_)), position(a)};
-      const Vec3 other = newell_normal(corners_);
-      for(int d = 0; d < 3; ++d)
-        before[d] += other[d];
-      if(!(dot(merged, before) > 0))
-        continue;
-      set_next(x_b, b_y, mesh_);
-      set_next(y_a, a_x, mesh_);
-      set_face(b_y, f, mesh_);
-      set_face(y_a, f, mesh_);
-      set_halfedge(f, a_x, mesh_);
-      set_inner_halfedge(a, y_a);
-      set_inner_halfedge(b, x_b);
-      --valences_[index(a)];
-      --valences_[index(b)];
-      valences_[index(v)] = 0;
-      removed_faces_[get(face_index_, g)] = true;
-      unlinked_.push_back({g, e1, e2, v});
-      ++removed;
-    }
-    return removed;
-  }
-
-  /// Removes the elements of the collapsed quads. Deferred to the end of the run: a
-  /// `Polyhedron_3` frees removed faces, and the pass lists may still name them.
-  void remove_unlinked_elements()
-  {
-    for(const Unlinked& u : unlinked_) {
-      remove_face(u.quad, mesh_);
-      remove_edge(edge(u.h1, mesh_), mesh_);
-      remove_edge(edge(u.h2, mesh_), mesh_);
-      remove_vertex(u.c, mesh_);
-    }
-    unlinked_.clear();
-  }
-
-  /// The tangent planes of `to` become those of both: in place where the map gives
-  /// references (no copy of the list), through get and put otherwise.
-  void append_planes(vertex_descriptor to, vertex_descriptor from)
-  {
-    using Reference = typename boost::property_traits<TangentPlanesMap>::reference;
-    if constexpr(std::is_lvalue_reference<Reference>::value &&
-                 !std::is_const<std::remove_reference_t<Reference>>::value) {
-      auto& merged = get(planes_, to);
-      const auto& added = get(planes_, from);
-      merged.insert(merged.end(), added.begin(), added.end());
-    } else {
-      auto merged = get(planes_, to);
-      const auto added = get(planes_, from);
-      merged.insert(merged.end(), added.begin(), added.end());
-      put(planes_, to, merged);
-    }
-  }
-
-  /// `replacement` takes the place of `h` in h's face.
-  void replace_in_face(halfedge_descriptor h, halfedge_descriptor replacement)
-  {
-    const face_descriptor f = face(h, mesh_);
-    set_next(prev(h, mesh_), replacement, mesh_);
-    set_next(replacement, next(h, mesh_), mesh_);
-    set_face(replacement, f, mesh_);
-    if(halfedge(f, mesh_) == h)
-      set_halfedge(f, replacement, mesh_);
-  }
-
   bool rotate_edges_;
-  PolygonMesh& mesh_;
-  VertexPointMap vpm_;
-  TangentPlanesMap planes_;
-  ConstrainedMap constrained_;
-  VertexIndexMap vertex_index_;
-  std::vector<Vec3>& normals_;
-  FaceIndexMap face_index_;
-  // by face index: faces are never created. (Bytes, not bits: read for every quad examined.)
-  std::vector<std::uint8_t> removed_faces_;
-  // by face index, the degree test cached: a collapse replaces a corner of the faces
-  // around it, a rotation or a doublet removal makes quads of quads
-  std::vector<std::uint8_t> is_quad_;
   std::vector<std::size_t> touched_in_pass_; // by face index: last pass that queued it
   // by face index: 1 + the number of walks before the face's last change was listed
   // (in changed_since_walk_)
@@ -993,15 +660,10 @@ private:
   std::vector<face_descriptor> changed_since_walk_;
   std::size_t walks_ = 0;
   bool touching_ = true; // whether operations queue the faces they change
-  std::vector<int> valences_;                // by vertex index
-  std::vector<std::uint8_t> on_border_;      // by vertex index
   const Progress* progress_ = &Progress::none(); // of the run
   int maximum_passes_ = 1;
   std::size_t pass_ = 0;
   std::vector<face_descriptor>* touched_ = nullptr; // the next pass's faces
-  mutable std::vector<vertex_descriptor> around_a_;
-  mutable std::vector<face_descriptor> faces_a_;
-  std::vector<halfedge_descriptor> into_c_;
   std::vector<face_descriptor> nearby_quads_;
   // by face index: the last `candidates_around()` that listed the face (no repeats)
   std::vector<std::size_t> nearby_in_stamp_;
@@ -1009,15 +671,6 @@ private:
   std::vector<Candidate> nearby_candidates_;
   std::vector<std::size_t> class_starts_; // group_by_priority_class()'s counts
   std::vector<Candidate> grouped_candidates_;
-  struct Unlinked // what a collapse (or a doublet removal) took out of the connectivity
-  {
-    face_descriptor quad;
-    halfedge_descriptor h1, h2; // one halfedge of each of the two removed edges
-    vertex_descriptor c;
-  };
-  std::vector<Unlinked> unlinked_;
-  mutable std::vector<Vec3> corners_;
-  mutable std::vector<Vec3> quad_corners_;
 };
 
 } // namespace internal
