@@ -10,6 +10,7 @@
 #include <CGAL/Range_space_remeshing/primal_remesh.h>
 #include <CGAL/Range_space_remeshing/quad_collapse.h>
 #include <CGAL/Range_space_remeshing/relax_on_tangent_planes.h>
+#include <CGAL/Range_space_remeshing/internal/Attribute_resampling.h>
 #include <CGAL/Range_space_remeshing/internal/Pooled_tangent_planes_map.h>
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Vertex_attributes.h>
@@ -100,9 +101,6 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
 
   const auto start = std::chrono::steady_clock::now();
   Remesh_statistics stats;
-  // vertex attributes go along where the input has them (np) and the output wants them (np_out)
-  const auto attributes = vertex_attributes_of(np, np_out);
-  using Attributes = std::decay_t<decltype(attributes)>;
   Primal primal;
   auto primal_normals = primal.add_property_map<typename Primal::Vertex_index, Vector>("v:normal").first;
   auto crease_normals = primal.add_property_map<typename Primal::Vertex_index, Vector>("v:crease_normal").first;
@@ -144,16 +142,9 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
   };
   // Nothing resolved at this cell size (or only pieces without a dual): an empty
   // result, which the statistics explain, rather than an error of a later stage.
-  if constexpr(!Attributes::empty) { // the primal carries them as numbers, unrounded
-    const auto stages = split_attributes(attributes, add_number_maps(primal, attributes));
-    if(!remesh_primal(with_attribute_pairs(primal_out, stages.first)))
-      return finish();
-    stats.dual = build_dual(primal, quads, dual_in, with_attribute_pairs(dual_out, stages.second), progress);
-  } else {
-    if(!remesh_primal(primal_out))
-      return finish();
-    stats.dual = build_dual(primal, quads, dual_in, dual_out, progress);
-  }
+  if(!remesh_primal(primal_out))
+    return finish();
+  stats.dual = build_dual(primal, quads, dual_in, dual_out, progress);
   if(stats.dual.quads + stats.dual.non_quads == 0)
     return finish();
 
@@ -204,6 +195,31 @@ Remesh_statistics remesh_keeping_topology(double h, const TriangleMesh& tm, Quad
 
 namespace internal {
 
+/// The vertex attributes (colours, texture coordinates, `vertex_attribute_maps`) where
+/// the input has them (np) and the output wants them (np_out), sampled at the output's
+/// final points (see Attribute_resampling.h). Returns the time taken, in ms.
+template <class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
+double sample_vertex_attributes(const TriangleMesh& tm, const QuadMesh& quads, const NamedParameters& np,
+                                const NamedParametersOut& np_out, const Progress& progress)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const auto attributes = vertex_attributes_of(np, np_out);
+  if constexpr(std::decay_t<decltype(attributes)>::empty)
+    return 0;
+  else {
+    const auto start = std::chrono::steady_clock::now();
+    sample_attributes_at_nearest_points(tm,
+                                        choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                                         get_const_property_map(CGAL::vertex_point, tm)),
+                                        quads,
+                                        choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
+                                                         get_const_property_map(CGAL::vertex_point, quads)),
+                                        attributes, progress);
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
+}
+
 /// The body of `remesh()`.
 template <class ConcurrencyTag, class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
 Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const NamedParameters& np,
@@ -219,14 +235,16 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
   remove_all_elements(quads);
   return emptied_on_cancel(quads, [&] {
     const double h = cell_size_of(tm, np);
-    if(target == 0)
-      return remesh_keeping_topology<ConcurrencyTag>(h, tm, quads, np, np_out, improvement, progress);
     Remesh_statistics stats;
-    search_cell_size(h, target, [&](double h_try) {
-      remove_all_elements(quads);
-      stats = remesh_keeping_topology<ConcurrencyTag>(h_try, tm, quads, np, np_out, improvement, progress);
-      return std::size_t(num_vertices(quads));
-    }, CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::preserve_topology), false));
+    if(target == 0)
+      stats = remesh_keeping_topology<ConcurrencyTag>(h, tm, quads, np, np_out, improvement, progress);
+    else
+      search_cell_size(h, target, [&](double h_try) {
+        remove_all_elements(quads);
+        stats = remesh_keeping_topology<ConcurrencyTag>(h_try, tm, quads, np, np_out, improvement, progress);
+        return std::size_t(num_vertices(quads));
+      }, CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::preserve_topology), false));
+    stats.time_total_ms += sample_vertex_attributes(tm, quads, np, np_out, progress);
     return stats;
   });
 }
@@ -309,9 +327,9 @@ empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
       \cgalParamDefault{none}
     \cgalParamNEnd
     \cgalParamNBegin{vertex_color_map}
-      \cgalParamDescription{the input's vertex colours, carried to `np_out`'s map: sampled on the
-                            primal, averaged per quad; a collapsed pair keeps one of its two colours,
-                            the relaxation does not resample}
+      \cgalParamDescription{the input's vertex colours, carried to `np_out`'s map: each output
+                            vertex gets the colour at its nearest point of `tm` (interpolated
+                            with barycentric coordinates), where it ends after the relaxation}
       \cgalParamType{a readable property map, vertex -> `CGAL::IO::Color` or `std::array<double, 3>`}
       \cgalParamDefault{none}
     \cgalParamNEnd
@@ -346,8 +364,8 @@ empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
     \cgalParamNEnd
     \cgalParamNBegin{vertex_attribute_maps}
       \cgalParamDescription{receives the properties of `np`'s maps of the same position; these and
-                            the maps above must be property maps of `quads` (they follow its
-                            vertices through the collapse)}
+                            the maps above are written once the run ends, for the vertices
+                            `quads` then has}
       \cgalParamType{a writable property map, or a `std::tuple` of as many as `np` gives}
       \cgalParamDefault{none}
     \cgalParamNEnd

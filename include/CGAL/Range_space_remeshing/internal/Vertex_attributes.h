@@ -10,10 +10,10 @@
 // coordinates, any user map) reach the output. Each output vertex is a weighted mix of
 // input vertices: a primal vertex of the corners of the input triangle it lies in
 // (barycentric weights), a dual vertex of the corners of its primal face (equal
-// weights) or of the ends of a primal border edge (linear weights). A property is
-// mixed as numbers: each value type says how it becomes N numbers and back.
-// The collapse mixes nothing: of a collapsed pair, the surviving vertex keeps its own
-// values (the output maps are the mesh's, which follow its vertices).
+// weights) or of the ends of a primal border edge (linear weights); in remesh(), each
+// output vertex of the nearest point of the input where it ended (barycentric weights,
+// Attribute_resampling.h). A property is mixed as numbers: each value type says how it
+// becomes N numbers and back.
 
 #include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Color.h>
@@ -36,12 +36,6 @@
 
 namespace CGAL {
 namespace Range_space_remeshing {
-namespace internal_np {
-// Internal: the ready pairs of (source map, destination map) a stage of `remesh()`
-// hands to the next, in place of the public maps (see `vertex_attributes_of()`).
-enum vertex_attribute_pairs_t { vertex_attribute_pairs };
-} // namespace internal_np
-
 namespace internal {
 
 /// How values of type `T` become numbers that weights can mix, and back. Specialised
@@ -263,65 +257,15 @@ auto pairs_of_attribute_maps(const NamedParametersIn& np_in, const NamedParamete
   }
 }
 
-/// The properties a stage carries from `np_in`'s vertices to `np_out`'s: the ready
-/// pairs of `remesh()`'s stages if given, else the colours (`vertex_color_map`), the
-/// texture coordinates (`vertex_texture_map`) and `vertex_attribute_maps`, each where
-/// both packs give it.
+/// The properties a stage carries from `np_in`'s vertices to `np_out`'s: the colours
+/// (`vertex_color_map`), the texture coordinates (`vertex_texture_map`) and
+/// `vertex_attribute_maps`, each where both packs give it.
 template <class NamedParametersIn, class NamedParametersOut>
 auto vertex_attributes_of(const NamedParametersIn& np_in, const NamedParametersOut& np_out)
 {
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParametersOut,
-                                                       internal_np::vertex_attribute_pairs_t>::value)
-    return make_vertex_attributes(CGAL::parameters::get_parameter(np_out, internal_np::vertex_attribute_pairs));
-  else
-    return make_vertex_attributes(
-        std::tuple_cat(pair_of_parameter(np_in, np_out, CGAL::internal_np::vertex_color_map),
-                       pair_of_parameter(np_in, np_out, CGAL::internal_np::vertex_texture_map),
-                       pairs_of_attribute_maps(np_in, np_out)));
-}
-
-/// `np` with the ready attribute pairs of `attributes` (see `vertex_attributes_of()`).
-template <class NamedParameters, class... Pairs>
-auto with_attribute_pairs(const NamedParameters& np, const Vertex_attributes<Pairs...>& attributes)
-{
-  using Pairs_tuple = std::tuple<Pairs...>;
-  return parameters::Named_function_parameters<Pairs_tuple, internal_np::vertex_attribute_pairs_t, NamedParameters>(
-      attributes.pairs(), np);
-}
-
-template <class Mesh, class... Pairs, std::size_t... I>
-auto add_number_maps(Mesh& mesh, const Vertex_attributes<Pairs...>&, std::index_sequence<I...>)
-{
-  using Vertex = typename Mesh::Vertex_index;
-  return std::make_tuple(
-      mesh.template add_property_map<Vertex, Numbers_of<decltype(Pairs::source)>>("v:attribute_" + std::to_string(I))
-          .first...);
-}
-
-/// For a stage in between (the primal of `remesh()`): a property map of numbers on
-/// `mesh` per pair of `attributes`, named "v:attribute_<k>".
-template <class Mesh, class... Pairs>
-auto add_number_maps(Mesh& mesh, const Vertex_attributes<Pairs...>& attributes)
-{
-  return add_number_maps(mesh, attributes, std::index_sequence_for<Pairs...>());
-}
-
-template <class Middle, class... Pairs, std::size_t... I>
-auto split_attributes(const Vertex_attributes<Pairs...>& attributes, const Middle& middle, std::index_sequence<I...>)
-{
-  const auto& pairs = attributes.pairs();
-  return std::make_pair(
-      make_vertex_attributes(std::make_tuple(make_attribute_pair(std::get<I>(pairs).source, std::get<I>(middle))...)),
-      make_vertex_attributes(
-          std::make_tuple(make_attribute_pair(std::get<I>(middle), std::get<I>(pairs).destination)...)));
-}
-
-/// The attributes split at a stage in between: from the sources of `attributes` to the
-/// maps `middle`, and from `middle` to the destinations of `attributes`.
-template <class Middle, class... Pairs>
-auto split_attributes(const Vertex_attributes<Pairs...>& attributes, const Middle& middle)
-{
-  return split_attributes(attributes, middle, std::index_sequence_for<Pairs...>());
+  return make_vertex_attributes(std::tuple_cat(pair_of_parameter(np_in, np_out, CGAL::internal_np::vertex_color_map),
+                                               pair_of_parameter(np_in, np_out, CGAL::internal_np::vertex_texture_map),
+                                               pairs_of_attribute_maps(np_in, np_out)));
 }
 
 } // namespace internal
