@@ -26,12 +26,13 @@ for mesh in elephant fandisk elephant-with-holes; do
 done
 cli=build/bin/range_space_remesh
 
-# render MESH PNG [f3d options...]: a 640 x 640 picture with edges, light background
+# render MESH PNG [f3d options...]: a 640 x 640 picture with edges, light background;
+# the surface colour is $colour if set (f3d keeps the first --color it is given)
 render() {
   local mesh="$1" png="$2"
   shift 2
   xvfb-run -a f3d --output="$figures/$png" --resolution=640,640 --edges --bg-color=1,1,1 \
-    --color=0.85,0.85,0.8 --up=+Y "$@" "$mesh" > /dev/null 2>&1
+    --color="${colour:-0.85,0.85,0.8}" --up=+Y "$@" "$mesh" > /dev/null 2>&1
   echo "$figures/$png"
 }
 # remesh NAME INPUT [options...]: the CLI's output in $work/NAME.off, its stats in NAME.json
@@ -99,3 +100,15 @@ render "$work/topology_flagged.ply" topology_elephant_flagged.png --scalars --ce
 render "$work/topology_coarse.off" topology_elephant_coarse.png
 remesh topology_preserved "$elephant" --output primal --cell-size 0.1 --preserve-topology
 render "$work/topology_preserved.off" topology_elephant_preserved.png
+# texture coordinates (the manual's section on vertex attributes): a bumpy disc with one
+# UV per vertex (no seam) and a generated checkerboard, and the dual remesh at about a
+# quarter of its vertices, written as OBJ with vt. f3d 1.3 textures an OBJ's vt with
+# --geometry-only (its OBJ importer otherwise keeps the file's materials) and does
+# not read the PLY s t the program writes.
+python3 scripts/textured_disc.py "$work/textured_disc.obj" "$work/checker.png" 40
+"$cli" --stats --map position-normal --target-vertices 1230 "$work/textured_disc.obj" "$work/textured_dual.obj" \
+  > "$work/textured_dual.json"
+for mesh in textured_disc textured_dual; do
+  colour=1,1,1 render "$work/$mesh.obj" "$mesh.png" --geometry-only --texture-base-color="$work/checker.png" \
+    --roughness=1 --camera-position=0,-2.8,2.9 --camera-focal-point=0,0,-0.05 --camera-view-up=0,0,1
+done
