@@ -143,6 +143,42 @@ struct Dual_statistics
 
 /*!
 \ingroup PkgRangeSpaceRemeshingRef
+What the stage of `remesh()` that makes the dual all quads did (after `dualize()`,
+before the collapse). The dual's faces that are not quads (where parallel edges were
+joined, pinches glued, pieces dropped) are turned into quads with operations that keep
+the vertices, the Euler characteristic and the components: a face of more than four
+sides is cut by diagonals into quads and, if its degree is odd, one triangle; each
+triangle then walks along a shortest path of quads to the nearest other triangle (a
+quad at a time: joined with the quad into a pentagon, which is cut again so that the
+triangle is on the far side) and the two are joined into a quad. Of the diagonals a
+step can take, it takes the one whose faces are in the best shape (not folded, then
+convex, then by the least corner angle); the relaxation and the untangling that
+follow clean the shapes.
+
+A piece with border can have an odd number of faces of odd degree (as many as its
+border edges, modulo 2): one of them then stays, counted in `non_quads_after`, and
+`Remesh_statistics::topology_preserved()` is false: such a piece cannot be all quads
+at this cell size.
+*/
+struct All_quads_statistics
+{
+  /// faces of the dual that were not quads
+  std::size_t non_quads_before = 0;
+  /// diagonals that cut faces of more than four sides
+  std::size_t split_faces = 0;
+  /// steps of a triangle through a quad towards its partner
+  std::size_t triangle_steps = 0;
+  /// pairs of triangles joined into a quad
+  std::size_t joined_triangles = 0;
+  /// faces still not quads: a triangle without a partner in its piece, or one that
+  /// every path refused (a step would have doubled an edge or made a face visit a
+  /// vertex twice)
+  std::size_t non_quads_after = 0;
+  double time_ms = 0;
+};
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
 What a run of `collapse_quads()` did.
 */
 struct Collapse_statistics
