@@ -247,7 +247,9 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
 \ingroup PkgRangeSpaceRemeshingRef
 
 The whole pipeline: `primal_remesh()` of `tm`, `dualize()` of the result into
-`quads`, `collapse_quads()`, `relax_on_tangent_planes()`, then an untangling: the
+`quads`, the faces of the dual that are not quads made quads (see
+`All_quads_statistics`; a piece that cannot be all quads keeps one and is counted),
+`collapse_quads()`, `relax_on_tangent_planes()`, then an untangling: the
 vertices of the quads left folded or non-convex (see `Untangle_statistics`), and where
 needed those around them, move on their tangent planes to raise the least corner
 quality of their faces, never making a face's shape worse. When the cell size
