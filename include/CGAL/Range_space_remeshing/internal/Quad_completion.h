@@ -124,7 +124,7 @@ private:
 
   bool adjacent(vertex_descriptor u, vertex_descriptor v) const { return halfedge(u, v, mesh_).second; }
 
-  // The corners of a face, as targets of its halfedges from h.
+  // The halfedges of a face, from h.
   std::vector<halfedge_descriptor> halfedges_of(halfedge_descriptor h) const
   {
     std::vector<halfedge_descriptor> result;
