@@ -317,8 +317,9 @@ std::size_t folded_faces(const Mesh& m)
 }
 
 /// The stage that makes the dual all quads, on a dual it did not produce: the quad
-/// cube's, whose 8 corners are triangles, three quads apart (no face may fold); then the same with one
-/// triangle removed (a border of 3 edges: an odd number of odd faces, one must stay).
+/// cube's, whose 8 corners are triangles, three quads apart (no face may fold); then
+/// the same with one triangle removed (a border of 3 edges: an odd number of odd
+/// faces, one must stay), and with a piece of two triangles beside it.
 void test_all_quads_on_cube_dual()
 {
   Mesh dual; // at the primal faces' centroids: no face folded to begin with
@@ -333,6 +334,7 @@ void test_all_quads_on_cube_dual()
   CHECK_EQ(stats.non_quads_before, std::size_t(8));
   CHECK_EQ(stats.joined_triangles, std::size_t(4));
   CHECK_EQ(stats.non_quads_after, std::size_t(0));
+  CHECK_EQ(stats.pieces_not_all_quads, std::size_t(0));
   CHECK_EQ(non_quad_faces(dual), std::size_t(0));
   CHECK_EQ(euler_characteristic(dual), 2L);
   CHECK_EQ(number_of_components(dual), std::size_t(1));
@@ -351,9 +353,24 @@ void test_all_quads_on_cube_dual()
   CHECK_EQ(open.non_quads_before, std::size_t(7));
   CHECK_EQ(open.joined_triangles, std::size_t(3));
   CHECK_EQ(open.non_quads_after, std::size_t(1)); // counted, not hidden
+  CHECK_EQ(open.pieces_not_all_quads, std::size_t(1));
   CHECK_EQ(non_quad_faces(with_hole), std::size_t(1));
   CHECK_EQ(euler_characteristic(with_hole), chi);
   CHECK_EQ(folded_faces(with_hole), std::size_t(0));
+
+  // a piece of two triangles glued back to back (what coarse cells leave around thin
+  // parts) beside an all-quad one: three vertices hold no quad, the pair stays, counted
+  Mesh with_pillow = dual;
+  const auto a = with_pillow.add_vertex(Point(5, 0, 0)), b = with_pillow.add_vertex(Point(6, 0, 0)),
+             c = with_pillow.add_vertex(Point(5, 1, 0));
+  with_pillow.add_face(a, b, c);
+  with_pillow.add_face(a, c, b);
+  CHECK(CGAL::is_valid_polygon_mesh(with_pillow));
+  const auto pillow = RSR::internal::complete_quads(with_pillow, params::default_values());
+  CHECK_EQ(pillow.non_quads_before, std::size_t(2));
+  CHECK_EQ(pillow.non_quads_after, std::size_t(2));
+  CHECK_EQ(pillow.pieces_not_all_quads, std::size_t(1));
+  CHECK(CGAL::is_valid_polygon_mesh(with_pillow));
 }
 
 /// remesh() with its defaults on CGAL's bull at 2 % of its diagonal: the dual joins

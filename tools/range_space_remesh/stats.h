@@ -106,7 +106,8 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                     {"split_faces", all.all_quads.split_faces},
                     {"triangle_steps", all.all_quads.triangle_steps},
                     {"joined_triangles", all.all_quads.joined_triangles},
-                    {"non_quads_after", all.all_quads.non_quads_after}};
+                    {"non_quads_after", all.all_quads.non_quads_after},
+                    {"pieces_not_all_quads", all.all_quads.pieces_not_all_quads}};
   j["collapsed_quads"] = all.collapse.collapsed_quads;
   j["removed_doublets"] = all.collapse.removed_doublets;
   j["rotated_edges"] = all.collapse.rotated_edges;

@@ -156,9 +156,10 @@ convex, then by the least corner angle); the relaxation and the untangling that
 follow clean the shapes.
 
 A piece with border can have an odd number of faces of odd degree (as many as its
-border edges, modulo 2): one of them then stays, counted in `non_quads_after`, and
-`Remesh_statistics::topology_preserved()` is false: such a piece cannot be all quads
-at this cell size.
+border edges, modulo 2), and a piece of two triangles glued back to back has no room
+for a quad: their faces stay, counted in `non_quads_after` and
+`pieces_not_all_quads`, and `Remesh_statistics::topology_preserved()` is false: such
+a piece cannot be all quads at this cell size.
 */
 struct All_quads_statistics
 {
@@ -174,6 +175,11 @@ struct All_quads_statistics
   /// every path refused (a step would have doubled an edge or made a face visit a
   /// vertex twice)
   std::size_t non_quads_after = 0;
+  /// connected pieces of the output that hold the faces of `non_quads_after`: pieces
+  /// with border and an odd number of faces of odd degree, or pieces too small to be
+  /// all quads (two triangles glued back to back, which coarse cells leave around thin
+  /// parts)
+  std::size_t pieces_not_all_quads = 0;
   double time_ms = 0;
 };
 

@@ -79,8 +79,7 @@ public:
       for(face_descriptor f : large)
         cut_into_quads(f, triangles, stats);
       pair_triangles(triangles, stats);
-      for(face_descriptor f : faces(mesh_))
-        stats.non_quads_after += (degree(f, mesh_) != 4);
+      count_what_is_left(stats);
     }
     stats.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return stats;
@@ -88,6 +87,31 @@ public:
 
 private:
   using Polygon = std::vector<vertex_descriptor>;
+
+  /// The faces still not quads, and the pieces (connected sets of faces) they are in.
+  void count_what_is_left(All_quads_statistics& stats) const
+  {
+    std::set<face_descriptor> reached; // the faces of the pieces counted so far
+    for(face_descriptor f : faces(mesh_)) {
+      if(degree(f, mesh_) == 4)
+        continue;
+      ++stats.non_quads_after;
+      if(reached.count(f) != 0)
+        continue;
+      ++stats.pieces_not_all_quads;
+      std::vector<face_descriptor> stack{f};
+      reached.insert(f);
+      while(!stack.empty()) {
+        const face_descriptor g = stack.back();
+        stack.pop_back();
+        for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(g, mesh_), mesh_)) {
+          const face_descriptor n = face(opposite(h, mesh_), mesh_);
+          if(n != GT::null_face() && reached.insert(n).second)
+            stack.push_back(n);
+        }
+      }
+    }
+  }
 
   // The shape of a polygon, best first, and its least corner quality: what the
   // choice between diagonals compares.
