@@ -118,7 +118,8 @@ struct Dual_statistics
   /// pairs of triangles (duals of the two valence-3 ends of a merged digon) joined into a quad
   std::size_t joined_triangle_pairs = 0;
   /// faces that are not quads (duals of primal vertices of valence other than 4 that
-  /// could not be paired)
+  /// could not be paired, faces joined across parallel edges); `remesh()` makes them
+  /// quads next (`All_quads_statistics`)
   std::size_t non_quads = 0;
   /// pieces whose dual cannot be a polygon mesh (e.g. a pillow of two faces whose
   /// vertices all have valence 2), removed
