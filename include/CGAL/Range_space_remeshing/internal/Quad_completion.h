@@ -350,7 +350,7 @@ private:
 
 /// The stage of `remesh()` after the dual (see `All_quads_statistics`): reads
 /// `vertex_point_map` and, if given, `vertex_normal_map` (else each vertex's normal is
-/// the sum of its faces' area vectors).
+/// the sum of its faces' area vectors). A `Surface_mesh` is garbage-collected at the end.
 template <class PolygonMesh, class NamedParameters>
 All_quads_statistics complete_quads(PolygonMesh& mesh, const NamedParameters& np)
 {
@@ -369,7 +369,13 @@ All_quads_statistics complete_quads(PolygonMesh& mesh, const NamedParameters& np
     else
       return area_weighted_vertex_normal(v, mesh, vpm);
   };
-  return Quad_completion<PolygonMesh, decltype(vpm), decltype(normal_of)>(mesh, vpm, normal_of).run();
+  const All_quads_statistics stats =
+      Quad_completion<PolygonMesh, decltype(vpm), decltype(normal_of)>(mesh, vpm, normal_of).run();
+  // as after the dual and the collapse: contiguous indices, and num_faces() (which
+  // counts removed faces) right for the stages and the writers after it; no vertex is
+  // removed, so the vertices keep their indices and properties
+  collect_garbage_if_any(mesh);
+  return stats;
 }
 
 } // namespace internal
