@@ -104,6 +104,18 @@ if(NOT non_quads EQUAL 0 OR NOT quads GREATER 1000 OR NOT valence_4 GREATER 100)
   math(EXPR failures "${failures} + 1")
 endif()
 
+# bull at 2 % of its diagonal: the dual joins parallel edges into triangles and
+# heptagons, which the all-quads stage makes quads (its counts in --stats)
+run(0 bull.off --stats --cell-size 0.02 ${MESH_DIR}/bull.off bull.off)
+expect_json(0 non_quads)
+expect_json(0 all_quads non_quads_after)
+string(JSON bull_non_quads GET "${out}" all_quads non_quads_before)
+string(JSON bull_joined GET "${out}" all_quads joined_triangles)
+if(NOT bull_non_quads GREATER 0 OR NOT bull_joined GREATER 0)
+  message(SEND_ERROR "bull: no non-quad in the dual to make quads: ${out}")
+  math(EXPR failures "${failures} + 1")
+endif()
+
 # the primal output: valence 4 except the ends of merged digons
 run(0 p.off --stats --output primal --cell-size 0.02 ${elephant} p.off)
 string(JSON digons GET "${out}" digons)

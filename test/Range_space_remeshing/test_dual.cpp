@@ -6,6 +6,7 @@
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 #include <CGAL/Range_space_remeshing/dualize.h>
 #include <CGAL/Range_space_remeshing/internal/Pooled_tangent_planes_map.h>
+#include <CGAL/Range_space_remeshing/internal/Quad_completion.h>
 #include <CGAL/Range_space_remeshing/insert_crease_triangles.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 #include <CGAL/Range_space_remeshing/quad_collapse.h>
@@ -289,6 +290,107 @@ void test_quad_cube()
   CHECK_EQ(num_faces(dual), num_vertices(cube));
   CHECK_EQ(stats.non_quads, std::size_t(8));
   CHECK_EQ(stats.quads, num_vertices(cube) - 8);
+}
+
+std::size_t non_quad_faces(const Mesh& m)
+{
+  std::size_t count = 0;
+  for(auto f : faces(m))
+    count += degree(f, m) != 4;
+  return count;
+}
+
+/// Faces folded over against their corners' normals (each the sum of its faces' area
+/// vectors), by the untangling's own test.
+std::size_t folded_faces(const Mesh& m)
+{
+  const RSR::internal::Face_corners fc(m, get(CGAL::vertex_index, m), num_vertices(m));
+  std::vector<RSR::internal::Vec3> position, normal;
+  for(auto v : vertices(m)) {
+    position.push_back(RSR::internal::to_vec3(m.point(v)));
+    normal.push_back(RSR::internal::area_weighted_vertex_normal(v, m, m.points()));
+  }
+  std::size_t folded = 0;
+  for(std::size_t k = 0; k < fc.size(); ++k)
+    folded += RSR::internal::shape_of(fc, k, position, normal) == RSR::internal::Face_shape::FOLDED;
+  return folded;
+}
+
+/// The stage that makes the dual all quads, on a dual it did not produce: the quad
+/// cube's, whose 8 corners are triangles, three quads apart (no face may fold); then
+/// the same with one triangle removed (a border of 3 edges: an odd number of odd
+/// faces, one must stay), and with a piece of two triangles beside it.
+void test_all_quads_on_cube_dual()
+{
+  Mesh dual; // at the primal faces' centroids: no face folded to begin with
+  RSR::dualize(make_quad_cube(3), dual, RSR::parameters::dual_placement(RSR::Dual_placement::AVERAGE));
+  CHECK_EQ(non_quad_faces(dual), std::size_t(8));
+  CHECK_EQ(folded_faces(dual), std::size_t(0));
+  Mesh with_hole = dual;
+  const auto stats = RSR::internal::complete_quads(dual, params::default_values());
+  std::cout << "cube dual: " << stats.non_quads_before << " non-quads, " << stats.triangle_steps << " steps, "
+            << stats.joined_triangles << " pairs joined, " << stats.non_quads_after << " left" << std::endl;
+  CHECK(CGAL::is_valid_polygon_mesh(dual));
+  CHECK(!dual.has_garbage()); // num_faces() counts removed faces until it is collected
+  CHECK_EQ(stats.non_quads_before, std::size_t(8));
+  CHECK_EQ(stats.joined_triangles, std::size_t(4));
+  CHECK_EQ(stats.non_quads_after, std::size_t(0));
+  CHECK_EQ(stats.pieces_not_all_quads, std::size_t(0));
+  CHECK_EQ(non_quad_faces(dual), std::size_t(0));
+  CHECK_EQ(euler_characteristic(dual), 2L);
+  CHECK_EQ(number_of_components(dual), std::size_t(1));
+  CHECK_EQ(RSR::internal::number_of_parallel_edges(dual), std::size_t(0));
+  CHECK_EQ(folded_faces(dual), std::size_t(0));
+
+  for(auto f : faces(with_hole))
+    if(degree(f, with_hole) == 3) {
+      CGAL::Euler::remove_face(halfedge(f, with_hole), with_hole);
+      break;
+    }
+  with_hole.collect_garbage();
+  const long chi = euler_characteristic(with_hole);
+  const auto open = RSR::internal::complete_quads(with_hole, params::default_values());
+  CHECK(CGAL::is_valid_polygon_mesh(with_hole));
+  CHECK_EQ(open.non_quads_before, std::size_t(7));
+  CHECK_EQ(open.joined_triangles, std::size_t(3));
+  CHECK_EQ(open.non_quads_after, std::size_t(1)); // counted, not hidden
+  CHECK_EQ(open.pieces_not_all_quads, std::size_t(1));
+  CHECK_EQ(non_quad_faces(with_hole), std::size_t(1));
+  CHECK_EQ(euler_characteristic(with_hole), chi);
+  CHECK_EQ(folded_faces(with_hole), std::size_t(0));
+
+  // a piece of two triangles glued back to back (what coarse cells leave around thin
+  // parts) beside an all-quad one: three vertices hold no quad, the pair stays, counted
+  Mesh with_pillow = dual;
+  const auto a = with_pillow.add_vertex(Point(5, 0, 0)), b = with_pillow.add_vertex(Point(6, 0, 0)),
+             c = with_pillow.add_vertex(Point(5, 1, 0));
+  with_pillow.add_face(a, b, c);
+  with_pillow.add_face(a, c, b);
+  CHECK(CGAL::is_valid_polygon_mesh(with_pillow));
+  const auto pillow = RSR::internal::complete_quads(with_pillow, params::default_values());
+  CHECK_EQ(pillow.non_quads_before, std::size_t(2));
+  CHECK_EQ(pillow.non_quads_after, std::size_t(2));
+  CHECK_EQ(pillow.pieces_not_all_quads, std::size_t(1));
+  CHECK(CGAL::is_valid_polygon_mesh(with_pillow));
+}
+
+/// remesh() with its defaults on CGAL's bull at 2 % of its diagonal: the dual joins
+/// parallel edges into two triangles and two heptagons there; the output is all quads,
+/// with the input's Euler characteristic and components.
+void test_all_quads_in_pipeline(const Mesh& bull)
+{
+  Mesh quads;
+  const auto all = RSR::remesh(bull, quads, RSR::parameters::grid_spacing(0.02 * bbox_diagonal(bull)));
+  std::cout << "bull at 0.02: " << num_faces(quads) << " faces, " << all.all_quads.non_quads_before
+            << " non-quads in the dual, " << non_quad_faces(quads) << " in the output" << std::endl;
+  CHECK(all.all_quads.non_quads_before > 0); // the case this checks is still there
+  CHECK_EQ(all.all_quads.non_quads_after, std::size_t(0));
+  CHECK_EQ(non_quad_faces(quads), std::size_t(0));
+  CHECK(CGAL::is_valid_polygon_mesh(quads));
+  CHECK_EQ(euler_characteristic(quads), euler_characteristic(bull));
+  Mesh input = bull;
+  CHECK_EQ(number_of_components(quads), number_of_components(input));
+  CHECK_EQ(RSR::internal::number_of_parallel_edges(quads), std::size_t(0));
 }
 
 /// Quad meshes the collapse did not produce: a regular subdivided cube, where no
@@ -936,6 +1038,7 @@ int main(int argc, char** argv)
   test_sharp_placement_parts();
   test_newell_normal_far_from_origin();
   test_quad_cube();
+  test_all_quads_on_cube_dual();
   test_collapse_on_other_meshes();
   test_edge_rotation();
   test_dipole_walk();
@@ -962,5 +1065,10 @@ int main(int argc, char** argv)
       if(name == std::string("elephant"))
         check_storable_dual(name, input, 0.12, &RSR::Dual_statistics::joined_parallel_edges);
     }
+  if(argc > 1) {
+    Mesh bull;
+    CHECK(CGAL::IO::read_polygon_mesh(std::string(argv[1]) + "/bull.off", bull));
+    test_all_quads_in_pipeline(bull);
+  }
   return report("test_dual");
 }

@@ -103,6 +103,12 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
   j["dual_dropped_pieces"] = all.dual.dropped_pieces;
   j["removed_pinches"] = all.dual.removed_pinches;
   j["joined_parallel_edges"] = all.dual.joined_parallel_edges;
+  j["all_quads"] = {{"non_quads_before", all.all_quads.non_quads_before},
+                    {"split_faces", all.all_quads.split_faces},
+                    {"triangle_steps", all.all_quads.triangle_steps},
+                    {"joined_triangles", all.all_quads.joined_triangles},
+                    {"non_quads_after", all.all_quads.non_quads_after},
+                    {"pieces_not_all_quads", all.all_quads.pieces_not_all_quads}};
   j["collapsed_quads"] = all.collapse.collapsed_quads;
   j["removed_doublets"] = all.collapse.removed_doublets;
   j["rotated_edges"] = all.collapse.rotated_edges;
@@ -145,7 +151,8 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                   {"seeding", s.time_seeding_ms}, {"tracing", s.time_tracing_ms},
                   {"faces", s.time_faces_ms},     {"topology", s.time_topology_ms},
                   {"output", s.time_output_ms},   {"dual", all.dual.time_ms},
-                  {"collapse", all.collapse.time_ms}, {"relaxation", all.time_relaxation_ms},
+                  {"all_quads", all.all_quads.time_ms}, {"collapse", all.collapse.time_ms},
+                  {"relaxation", all.time_relaxation_ms},
                   {"untangle", all.untangle.time_ms},
                   {"total", all.time_total_ms},   {"write", io.write_ms}};
   std::cout << j.dump(-1, ' ', false, error_handler) << std::endl;

@@ -53,7 +53,8 @@ inline void warn_about_topology(const RSR::Remesh_statistics& all, const Options
   std::cerr << "range_space_remesh: warning: the remesh may not have the input's topology ("
             << s.closed_loops << " closed loops, " << s.non_disk_cells << " non-disk cells, " << s.lost_components
             << " lost components, " << s.uncrossed_border_cycles << " lost border cycles, "
-            << s.dropped_pieces + (dual ? all.dual.dropped_pieces : 0) << " dropped pieces; Euler characteristic "
+            << s.dropped_pieces + (dual ? all.dual.dropped_pieces : 0) << " dropped pieces, "
+            << (dual ? all.all_quads.pieces_not_all_quads : 0) << " pieces not all quads; Euler characteristic "
             << s.input_euler_characteristic << " -> " << s.output_euler_characteristic << ", "
             << defects.size() << " defects); use --preserve-topology or a smaller cell size" << std::endl;
 }

@@ -118,7 +118,8 @@ struct Dual_statistics
   /// pairs of triangles (duals of the two valence-3 ends of a merged digon) joined into a quad
   std::size_t joined_triangle_pairs = 0;
   /// faces that are not quads (duals of primal vertices of valence other than 4 that
-  /// could not be paired)
+  /// could not be paired, faces joined across parallel edges); `remesh()` makes them
+  /// quads next (`All_quads_statistics`)
   std::size_t non_quads = 0;
   /// pieces whose dual cannot be a polygon mesh (e.g. a pillow of two faces whose
   /// vertices all have valence 2), removed
@@ -138,6 +139,48 @@ struct Dual_statistics
   /// whose edges is removed by joining its two faces into one (a face with more corners,
   /// counted in `non_quads`)
   std::size_t joined_parallel_edges = 0;
+  double time_ms = 0;
+};
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+What the stage of `remesh()` that makes the dual all quads did (after `dualize()`,
+before the collapse). The dual's faces that are not quads (where parallel edges were
+joined, pinches glued, pieces dropped) are turned into quads with operations that keep
+the vertices, the Euler characteristic and the components: a face of more than four
+sides is cut by diagonals into quads and, if its degree is odd, one triangle; each
+triangle then walks along a shortest path of quads to the nearest other triangle (a
+quad at a time: joined with the quad into a pentagon, which is cut again so that the
+triangle is on the far side) and the two are joined into a quad. Of the diagonals a
+step can take, it takes the one whose faces are in the best shape (not folded, then
+convex, then by the least corner angle); the relaxation and the untangling that
+follow clean the shapes.
+
+A piece with border can have an odd number of faces of odd degree (as many as its
+border edges, modulo 2), and a piece of two triangles glued back to back has no room
+for a quad: their faces stay, counted in `non_quads_after` and
+`pieces_not_all_quads`, and `Remesh_statistics::topology_preserved()` is false: such
+a piece cannot be all quads at this cell size.
+*/
+struct All_quads_statistics
+{
+  /// faces of the dual that were not quads
+  std::size_t non_quads_before = 0;
+  /// diagonals that cut faces of more than four sides
+  std::size_t split_faces = 0;
+  /// steps of a triangle through a quad towards its partner
+  std::size_t triangle_steps = 0;
+  /// pairs of triangles joined into a quad
+  std::size_t joined_triangles = 0;
+  /// faces still not quads: a triangle without a partner in its piece, or one that
+  /// every path refused (a step would have doubled an edge or made a face visit a
+  /// vertex twice)
+  std::size_t non_quads_after = 0;
+  /// connected pieces of the output that hold the faces of `non_quads_after`: pieces
+  /// with border and an odd number of faces of odd degree, or pieces too small to be
+  /// all quads (two triangles glued back to back, which coarse cells leave around thin
+  /// parts)
+  std::size_t pieces_not_all_quads = 0;
   double time_ms = 0;
 };
 

@@ -9,6 +9,7 @@
 #include <CGAL/Range_space_remeshing/dualize.h>
 #include <CGAL/Range_space_remeshing/primal_remesh.h>
 #include <CGAL/Range_space_remeshing/quad_collapse.h>
+#include <CGAL/Range_space_remeshing/internal/Quad_completion.h>
 #include <CGAL/Range_space_remeshing/relax_on_tangent_planes.h>
 #include <CGAL/Range_space_remeshing/internal/Attribute_resampling.h>
 #include <CGAL/Range_space_remeshing/internal/Pooled_tangent_planes_map.h>
@@ -38,6 +39,8 @@ struct Remesh_statistics
   Statistics primal;
   /// the dual stage: quads, repairs, dropped pieces
   Dual_statistics dual;
+  /// the faces of the dual that were not quads, made quads before the collapse
+  All_quads_statistics all_quads;
   /// the quad collapse and edge rotations (all zero if not asked for)
   Collapse_statistics collapse;
   /// time of the relaxation on tangent planes
@@ -48,8 +51,12 @@ struct Remesh_statistics
   double time_total_ms = 0;
 
   /// Whether the quads have the input's topology as far as the checks tell: the
-  /// primal's topology check found no defect and the dual dropped no piece.
-  bool topology_preserved() const { return primal.topology_preserved() && dual.dropped_pieces == 0; }
+  /// primal's topology check found no defect, the dual dropped no piece, and every
+  /// piece could be made all quads.
+  bool topology_preserved() const
+  {
+    return primal.topology_preserved() && dual.dropped_pieces == 0 && all_quads.non_quads_after == 0;
+  }
 };
 
 namespace internal {
@@ -148,6 +155,7 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
   if(stats.dual.quads + stats.dual.non_quads == 0)
     return finish();
 
+  stats.all_quads = complete_quads(quads, stage_parameters);
   if(improvement.collapse)
     stats.collapse = collapse_quads(quads, stage_parameters.do_flip(improvement.rotate_edges)
                                                .number_of_collapse_passes(improvement.collapse_passes));
@@ -255,7 +263,9 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
 \ingroup PkgRangeSpaceRemeshingRef
 
 The whole pipeline: `primal_remesh()` of `tm`, `dualize()` of the result into
-`quads`, `collapse_quads()`, `relax_on_tangent_planes()`, then an untangling: the
+`quads`, the faces of the dual that are not quads made quads (see
+`All_quads_statistics`; a piece that cannot be all quads keeps one and is counted),
+`collapse_quads()`, `relax_on_tangent_planes()`, then an untangling: the
 vertices of the quads left folded or non-convex (see `Untangle_statistics`), and where
 needed those around them, move on their tangent planes to raise the least corner
 quality of their faces, never making a face's shape worse. When the cell size

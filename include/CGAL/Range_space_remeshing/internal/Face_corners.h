@@ -63,19 +63,19 @@ enum class Face_shape : unsigned char
   FOLDED      ///< its vector area faces against its corners' normals: folded over its neighbours
 };
 
-/// Twice the vector area of face k (the fan from its first corner, not from (0, 0, 0):
-/// no cancellation far from it) and the sum of its corners' unit normals.
-inline void area_and_reference(const Face_corners& fc, std::size_t k, const std::vector<Vec3>& position,
-                               const std::vector<Vec3>& normal, Vec3& area, Vec3& reference)
+/// Twice the vector area of a polygon of `count` corners (the fan from its first
+/// corner, not from (0, 0, 0): no cancellation far from it) and the sum of its
+/// corners' unit normals; `position(i)` and `normal(i)` give corner i's.
+template <class Position, class Normal>
+void polygon_area_and_reference(std::size_t count, const Position& position, const Normal& normal, Vec3& area,
+                                Vec3& reference)
 {
   area = {{0, 0, 0}};
   reference = {{0, 0, 0}};
-  const std::size_t begin = fc.first[k], end = fc.first[k + 1];
-  const Vec3& origin = position[fc.corners[begin]];
-  for(std::size_t c = begin; c < end; ++c) {
-    const Vec3 ab = cross(difference(position[fc.corners[c]], origin),
-                          difference(position[fc.corners[c + 1 < end ? c + 1 : begin]], origin));
-    const Vec3& n = normal[fc.corners[c]];
+  const Vec3& origin = position(0);
+  for(std::size_t c = 0; c < count; ++c) {
+    const Vec3 ab = cross(difference(position(c), origin), difference(position(next_corner(c, count)), origin));
+    const Vec3& n = normal(c);
     for(int d = 0; d < 3; ++d) {
       area[d] += ab[d];
       reference[d] += n[d];
@@ -83,41 +83,36 @@ inline void area_and_reference(const Face_corners& fc, std::size_t k, const std:
   }
 }
 
-/// The shape of face k at these positions (corner test: (e_next x e_prev) . area > 0
-/// at every corner, the sign only, as the benchmark's quality measure).
-inline Face_shape shape_of(const Face_corners& fc, std::size_t k, const std::vector<Vec3>& position,
-                           const std::vector<Vec3>& normal)
+/// The shape of a polygon (corner test: (e_next x e_prev) . area > 0 at every corner,
+/// the sign only, as the benchmark's quality measure).
+template <class Position, class Normal>
+Face_shape polygon_shape(std::size_t count, const Position& position, const Normal& normal)
 {
   Vec3 area, reference;
-  area_and_reference(fc, k, position, normal, area, reference);
+  polygon_area_and_reference(count, position, normal, area, reference);
   if(dot(area, reference) < 0)
     return Face_shape::FOLDED;
-  const std::size_t* corner = fc.corners.data() + fc.first[k];
-  return turns_left_at_every_corner(
-             fc.corner_count(k), [&](std::size_t i) -> const Vec3& { return position[corner[i]]; }, area)
-             ? Face_shape::FINE
-             : Face_shape::NON_CONVEX;
+  return turns_left_at_every_corner(count, position, area) ? Face_shape::FINE : Face_shape::NON_CONVEX;
 }
 
-/// The corner quality of face k: at each corner, the least over two normals (its
+/// The corner quality of a polygon: at each corner, the least over two normals (its
 /// vector-area normal and its corners' mean normal) of (e_next x e_prev) . n over the
 /// edges' lengths. Positive at every corner only where the face is fine and turns left
 /// seen from the surface too, so that raising it unfolds as well as it opens reflex
 /// corners. Returns the least; adds each corner's, at most `cap`, to `capped_sum`. A
-/// face with a side or an area of length 0 counts -1 at every corner.
-inline double corner_quality(const Face_corners& fc, std::size_t k, const std::vector<Vec3>& position,
-                             const std::vector<Vec3>& normal, double cap, double& capped_sum)
+/// polygon with a side or an area of length 0 counts -1 at every corner.
+template <class Position, class Normal>
+double polygon_corner_quality(std::size_t count, const Position& position, const Normal& normal, double cap,
+                              double& capped_sum)
 {
   Vec3 area, reference;
-  area_and_reference(fc, k, position, normal, area, reference);
+  polygon_area_and_reference(count, position, normal, area, reference);
   const Vec3 n[2] = {normalized(area), normalized(reference)};
-  const std::size_t count = fc.corner_count(k);
-  const std::size_t* corner = fc.corners.data() + fc.first[k];
   double worst = 1, sum = 0;
   for(std::size_t i = 0; i < count; ++i) {
-    const Vec3& p = position[corner[i]];
-    const Vec3 next = difference(position[corner[next_corner(i, count)]], p);
-    const Vec3 prev = difference(position[corner[previous_corner(i, count)]], p);
+    const Vec3& p = position(i);
+    const Vec3 next = difference(position(next_corner(i, count)), p);
+    const Vec3 prev = difference(position(previous_corner(i, count)), p);
     const double lengths = std::sqrt(dot(next, next) * dot(prev, prev));
     if(!(lengths > 0) || n[0] == Vec3{{0, 0, 0}} || n[1] == Vec3{{0, 0, 0}}) {
       capped_sum -= double(count);
@@ -130,6 +125,26 @@ inline double corner_quality(const Face_corners& fc, std::size_t k, const std::v
   }
   capped_sum += sum;
   return worst;
+}
+
+/// The shape of face k at these positions (see `polygon_shape()`).
+inline Face_shape shape_of(const Face_corners& fc, std::size_t k, const std::vector<Vec3>& position,
+                           const std::vector<Vec3>& normal)
+{
+  const std::size_t* corner = fc.corners.data() + fc.first[k];
+  return polygon_shape(
+      fc.corner_count(k), [&](std::size_t i) -> const Vec3& { return position[corner[i]]; },
+      [&](std::size_t i) -> const Vec3& { return normal[corner[i]]; });
+}
+
+/// The corner quality of face k (see `polygon_corner_quality()`).
+inline double corner_quality(const Face_corners& fc, std::size_t k, const std::vector<Vec3>& position,
+                             const std::vector<Vec3>& normal, double cap, double& capped_sum)
+{
+  const std::size_t* corner = fc.corners.data() + fc.first[k];
+  return polygon_corner_quality(
+      fc.corner_count(k), [&](std::size_t i) -> const Vec3& { return position[corner[i]]; },
+      [&](std::size_t i) -> const Vec3& { return normal[corner[i]]; }, cap, capped_sum);
 }
 
 } // namespace internal
