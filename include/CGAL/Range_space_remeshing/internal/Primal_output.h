@@ -146,6 +146,85 @@ Normals_at_point normals_on_sides(const PointArray& points, const std::array<Vec
 /// where the corners are is asked for twice as far ahead.
 constexpr std::uint32_t output_lookahead = 8;
 
+/// The vertices' triangles lie anywhere in the input: what output vertex v + k reads
+/// is asked for ahead, its triangle's record first, then what the record points to
+/// (and the given normals, with `normals`, and the attributes).
+template <bool normals, class Tracer, class VPM, class NormalMap, class Attributes>
+void prefetch_ahead_of(std::uint32_t v, const Tracer& tracer, const VPM& vpm, const NormalMap& given_normals,
+                       const Attributes& attributes)
+{
+  const auto& vertices = tracer.intersection_vertices();
+  if(v + 2 * output_lookahead < vertices.size())
+    tracer.prefetch_record_of(vertices[v + 2 * output_lookahead]);
+  if(v + output_lookahead < vertices.size())
+    tracer.prefetch_corners_of(vertices[v + output_lookahead]);
+  if(v + output_lookahead / 2 < vertices.size())
+    for(auto corner : tracer.corners_of(vertices[v + output_lookahead / 2])) {
+      prefetch_value(vpm, corner);
+      if constexpr(normals)
+        prefetch_value(given_normals, corner);
+      if constexpr(!Attributes::empty)
+        attributes.prefetch(corner);
+    }
+}
+
+/// The edges and faces of the complex's kept part in `out`, between the output
+/// vertices `vertex_of` (by intersection vertex); border halfedges last, so that a
+/// boundary vertex's halfedge is its border one.
+template <class PolygonMesh>
+void write_primal_connectivity(const Primal_complex& complex,
+                               const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& vertex_of,
+                               PolygonMesh& out, Statistics& stats)
+{
+  using out_vertex = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  using out_halfedge = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
+  using out_face = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  const std::uint32_t none = Primal_complex::none;
+  const auto& halfedges = complex.halfedges();
+  std::vector<out_halfedge> halfedge_of(halfedges.size());
+  std::vector<std::uint8_t> done(halfedges.size(), 0);
+  std::size_t number_of_edges = 0;
+  for(std::uint32_t h = 0; h < halfedges.size(); ++h) {
+    if(done[h] || !complex.is_kept(halfedges[h].target))
+      continue;
+    const auto e = add_edge(out);
+    halfedge_of[h] = halfedge(e, out);
+    halfedge_of[halfedges[h].twin] = opposite(halfedge(e, out), out);
+    done[h] = done[halfedges[h].twin] = 1;
+    ++number_of_edges;
+  }
+  std::size_t number_of_faces = 0;
+  for(std::uint32_t first : complex.face_halfedges()) {
+    if(first == none)
+      continue;
+    const out_face f = add_face(out);
+    set_halfedge(f, halfedge_of[first], out);
+    std::uint32_t h = first;
+    do {
+      const out_halfedge oh = halfedge_of[h];
+      const out_vertex t = vertex_of[halfedges[h].target];
+      set_face(oh, f, out);
+      set_target(oh, t, out);
+      set_next(oh, halfedge_of[halfedges[h].next], out);
+      set_halfedge(t, oh, out);
+      h = halfedges[h].next;
+    } while(h != first);
+    ++number_of_faces;
+  }
+  for(std::uint32_t h = 0; h < halfedges.size(); ++h) {
+    if(halfedges[h].face != none || !complex.is_kept(halfedges[h].target))
+      continue;
+    const out_halfedge oh = halfedge_of[h];
+    const out_vertex t = vertex_of[halfedges[h].target];
+    set_face(oh, boost::graph_traits<PolygonMesh>::null_face(), out);
+    set_target(oh, t, out);
+    set_next(oh, halfedge_of[halfedges[h].next], out);
+    set_halfedge(t, oh, out);
+  }
+  stats.output_edges = number_of_edges;
+  stats.output_faces = number_of_faces;
+}
+
 template <class TriangleMesh, class VPM, class VertexIndexMap, class Tracer, class PolygonMesh,
           class NamedParametersIn, class NamedParametersOut>
 void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex_index, Tracer& tracer,
@@ -156,8 +235,6 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
   using CGAL::parameters::get_parameter;
   using CGAL::parameters::is_default_parameter;
   using out_vertex = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
-  using out_halfedge = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
-  using out_face = typename boost::graph_traits<PolygonMesh>::face_descriptor;
 
   using Out_VPM = typename GetVertexPointMap<PolygonMesh, NamedParametersOut>::type;
   Out_VPM out_vpm = choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
@@ -191,7 +268,6 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
   std::array<std::pair<in_vertex, double>, 3> attribute_sources;
 
   const auto& vertices = tracer.intersection_vertices();
-  const std::uint32_t none = Primal_complex::none;
   reserve_if_possible(out, vertices.size(), complex.halfedges().size() / 2,
                       complex.face_halfedges().size());
   if constexpr(needs_corner_normals && !has_input_normals) // each output vertex reads three corners' normals
@@ -200,20 +276,7 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
   std::vector<out_vertex> vertex_of(vertices.size());
   std::size_t number_of_vertices = 0;
   for(std::uint32_t v = 0; v < vertices.size(); ++v) {
-    // The vertices' triangles lie anywhere in the input: what a vertex reads is asked
-    // for ahead, its triangle's record first, then what the record points to.
-    if(v + 2 * output_lookahead < vertices.size())
-      tracer.prefetch_record_of(vertices[v + 2 * output_lookahead]);
-    if(v + output_lookahead < vertices.size())
-      tracer.prefetch_corners_of(vertices[v + output_lookahead]);
-    if(v + output_lookahead / 2 < vertices.size())
-      for(in_vertex corner : tracer.corners_of(vertices[v + output_lookahead / 2])) {
-        prefetch_value(vpm, corner);
-        if constexpr(needs_corner_normals && has_input_normals)
-          prefetch_value(given_normals, corner);
-        if constexpr(!Attributes::empty)
-          attributes.prefetch(corner);
-      }
+    prefetch_ahead_of<needs_corner_normals && has_input_normals>(v, tracer, vpm, given_normals, attributes);
     if(!complex.is_kept(v))
       continue;
     const auto w = tracer.barycentric_coordinates(vertices[v]);
@@ -251,51 +314,8 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
     ++number_of_vertices;
   }
 
-  const auto& halfedges = complex.halfedges();
-  std::vector<out_halfedge> halfedge_of(halfedges.size());
-  std::vector<std::uint8_t> done(halfedges.size(), 0);
-  std::size_t number_of_edges = 0;
-  for(std::uint32_t h = 0; h < halfedges.size(); ++h) {
-    if(done[h] || !complex.is_kept(halfedges[h].target))
-      continue;
-    const auto e = add_edge(out);
-    halfedge_of[h] = halfedge(e, out);
-    halfedge_of[halfedges[h].twin] = opposite(halfedge(e, out), out);
-    done[h] = done[halfedges[h].twin] = 1;
-    ++number_of_edges;
-  }
-  std::size_t number_of_faces = 0;
-  for(std::uint32_t first : complex.face_halfedges()) {
-    if(first == none)
-      continue;
-    const out_face f = add_face(out);
-    set_halfedge(f, halfedge_of[first], out);
-    std::uint32_t h = first;
-    do {
-      const out_halfedge oh = halfedge_of[h];
-      const out_vertex t = vertex_of[halfedges[h].target];
-      set_face(oh, f, out);
-      set_target(oh, t, out);
-      set_next(oh, halfedge_of[halfedges[h].next], out);
-      set_halfedge(t, oh, out);
-      h = halfedges[h].next;
-    } while(h != first);
-    ++number_of_faces;
-  }
-  // border halfedges last, so that a boundary vertex's halfedge is its border one
-  for(std::uint32_t h = 0; h < halfedges.size(); ++h) {
-    if(halfedges[h].face != none || !complex.is_kept(halfedges[h].target))
-      continue;
-    const out_halfedge oh = halfedge_of[h];
-    const out_vertex t = vertex_of[halfedges[h].target];
-    set_face(oh, boost::graph_traits<PolygonMesh>::null_face(), out);
-    set_target(oh, t, out);
-    set_next(oh, halfedge_of[halfedges[h].next], out);
-    set_halfedge(t, oh, out);
-  }
   stats.output_vertices = number_of_vertices;
-  stats.output_edges = number_of_edges;
-  stats.output_faces = number_of_faces;
+  write_primal_connectivity(complex, vertex_of, out, stats);
 }
 
 } // namespace internal

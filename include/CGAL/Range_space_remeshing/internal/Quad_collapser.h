@@ -436,12 +436,12 @@ private:
       ++stats.refused_topology;
       return false;
     }
-    const Vec3 position = merged_position(h0);
-    if(!keeps_faces_unfolded(h0, position)) {
+    const Vec3 merged = merged_position(h0);
+    if(!keeps_faces_unfolded(h0, merged)) {
       ++stats.refused_fold_over;
       return false;
     }
-    collapse(h0, position);
+    collapse(h0, merged);
     ++stats.collapsed_quads;
     return true;
   }
