@@ -867,9 +867,12 @@ if(NOT number_of_st EQUAL 2)
   math(EXPR failures "${failures} + 1")
 endif()
 # a seam: vertex 5 has two texture coordinates; the UVs are dropped, with one line
-file(WRITE ${WORK_DIR}/uv_seam.obj "${octahedron_v}${octahedron_vt}vt 0.5 0.5\n"
-     "f 1/1 3/3 5/7\nf 3/3 2/2 5/5\nf 2/2 4/4 5/5\nf 4/4 1/1 5/5\n"
-     "f 3/3 1/1 6/6\nf 2/2 3/3 6/6\nf 4/4 2/2 6/6\nf 1/1 4/4 6/6\n")
+# (the octahedron with its first face changed)
+function(octahedron_obj_with_first_face face extra_vt file)
+  string(REPLACE "f 1/1 3/3 5/5\n" "${face}\n" faces "${octahedron_f}")
+  file(WRITE ${WORK_DIR}/${file} "${octahedron_v}${octahedron_vt}${extra_vt}${faces}")
+endfunction()
+octahedron_obj_with_first_face("f 1/1 3/3 5/7" "vt 0.5 0.5\n" uv_seam.obj)
 run(0 uv_seam_out.obj --stats --cell-size 0.05 uv_seam.obj uv_seam_out.obj)
 expect_json(OFF texture_coordinates carried)
 expect_json(1 texture_coordinates seam_vertices)
@@ -879,6 +882,39 @@ if(NOT err MATCHES "^range_space_remesh: 'uv_seam.obj': 1 vertex has several tex
   message(SEND_ERROR "OBJ seam: expected one line on stderr and no vt, got: ${err}")
   math(EXPR failures "${failures} + 1")
 endif()
+
+# ... and said only once the output is written: a run that fails says only why (one line)
+run(2 uv_seam_capped.obj --max-vertices 1 uv_seam.obj uv_seam_capped.obj)
+expect_message("cap" "UV seam, then the cap")
+run(2 NONE --cell-size 0.05 uv_seam.obj no_such_directory/uv_seam.obj)
+# a corner without a texture coordinate where the others have one: dropped, said
+octahedron_obj_with_first_face("f 1 3 5" "" uv_partial.obj)
+run(0 uv_partial_out.obj --stats --cell-size 0.05 uv_partial.obj uv_partial_out.obj)
+expect_json(OFF texture_coordinates carried)
+expect_json(3 texture_coordinates corners_without)
+if(NOT err MATCHES "^range_space_remesh: 'uv_partial.obj': 3 face corners have no texture coordinate[^\n]*dropped\n$")
+  message(SEND_ERROR "OBJ corners without UVs: expected one line on stderr, got: ${err}")
+  math(EXPR failures "${failures} + 1")
+endif()
+# a texture coordinate or normal the file does not define: refused, as a vertex is
+foreach(corner 5/0 5/7 5/-7 5/x 5/1.5 5/1x 5/5/5/5 5/5/1 5//1 5/5/q)
+  string(REPLACE "/" "_" name "${corner}")
+  octahedron_obj_with_first_face("f 1/1 3/3 ${corner}" "" uv_bad${name}.obj)
+  run(2 uv_bad_out.obj uv_bad${name}.obj uv_bad_out.obj)
+  expect_message("line 13" "OBJ corner ${corner}")
+endforeach()
+# UVs that are not finite numbers are refused, not reported as a seam
+string(REPLACE "0 0.9 0 0 0.9" "0 0.9 0 nan 0.9" uv_nan_ply "${ply_body}")
+file(WRITE ${WORK_DIR}/uv_nan.ply "ply\nformat ascii 1.0\nelement vertex 6\nproperty float x\nproperty float y\n"
+     "property float z\nproperty float s\nproperty float t\nelement face 8\n"
+     "property list uchar int vertex_indices\nend_header\n${uv_nan_ply}"
+     "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n")
+run(2 uv_nan_out.obj uv_nan.ply uv_nan_out.obj)
+expect_message("texture coordinate that is not a finite number" "PLY NaN UV")
+# a format without UVs: --stats says they were not written
+run(0 uv_out.off --stats --cell-size 0.05 uv.obj uv_out.off)
+expect_json(ON texture_coordinates carried)
+expect_json(OFF texture_coordinates written)
 
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} command-line check(s) failed")

@@ -386,9 +386,57 @@ void test_texture_coordinates()
   const auto seam = parse(obj_v + "f 1/1 2/2 3/3\nf 2/5 4/4 3/3\n", "obj");
   CHECK(seam.uvs.empty() && seam.uv_seam_points == 1);
   const auto partial = parse(obj_v + "f 1/1 2/2 3/3\nf 2 4 3\n", "obj");
-  CHECK(partial.uvs.empty() && partial.uv_seam_points == 0);
+  CHECK(partial.uvs.empty() && partial.uv_seam_points == 0 && partial.uv_missing_corners == 3);
   const auto relative = parse(obj_v + "f 1/-5 2/-4 3/-3\nf 2/-4 4/-2 3/-3\n", "obj");
   CHECK(relative.uvs.size() == 4 && relative.uvs[3][0] == 1 && relative.uvs[3][1] == 1);
+  // "vt u" alone: v is 0
+  const auto one_number = parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5\nvt 1 1\nf 1/1 2/2 3/1\n", "obj");
+  CHECK(one_number.uvs.size() == 3 && one_number.uvs[0][0] == 0.5 && one_number.uvs[0][1] == 0);
+}
+
+/// Corners whose texture coordinate or normal is not one the file defines are refused,
+/// like vertex indices: the UVs are never dropped without a word.
+void test_bad_obj_corners_are_refused()
+{
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\n";
+  CHECK(!refuses(obj + "f 1/1 2/2 3/3\nf 1/-3/1 2//-1 3/3/1\nf 1/ 2// 3\n", "obj"));
+  for(const char* corner : {"3/0", "3/4", "3/-4", "3/-7", "3/99999999999999999999", "3/x", "3/1.5", "3/1x",
+                            "3/1/1/1", "3/1/2", "3//9", "3/1/q", "3/1/0", "3/+", "/1"})
+    if(!refuses(obj + "f 1/1 2/2 " + corner + "\n", "obj")) {
+      std::cerr << "corner '" << corner << "' accepted" << std::endl;
+      CHECK(false);
+    }
+  CHECK(!refuses(obj + "f 1/1 2/2 3//\n", "obj")); // "v//": neither given
+  CHECK(refuses("v 0 0 0\nvt nan 0\n", "obj"));
+  CHECK(refuses("v 0 0 0\nvt 0 inf\n", "obj"));
+  CHECK(refuses("v 0 0 0\nvt 0 x\n", "obj"));
+}
+
+/// PLY texture coordinates: names paired by family only, each name once, finite values.
+void test_ply_texture_names()
+{
+  auto ply = [](const std::string& names, const std::string& values) {
+    std::string header = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                         "property float z\n";
+    std::istringstream words(names);
+    for(std::string name; words >> name;)
+      header += "property float " + name + "\n";
+    return header + "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0 " + values +
+           "\n1 0 0 " + values + "\n0 1 0 " + values + "\n3 0 1 2\n";
+  };
+  const auto u_and_st = parse(ply("s t u", "0.25 0.5 9"), "ply"); // a lone u does not override s
+  CHECK(u_and_st.uvs.size() == 3 && u_and_st.uvs[0][0] == 0.25 && u_and_st.uvs[0][1] == 0.5);
+  CHECK(parse(ply("s v", "0.25 0.5"), "ply").uvs.empty()); // two families: no pair
+  CHECK(parse(ply("texture_u t", "0.25 0.5"), "ply").uvs.empty());
+  const auto uv = parse(ply("texture_v texture_u", "0.5 0.25"), "ply"); // any order
+  CHECK(uv.uvs.size() == 3 && uv.uvs[0][0] == 0.25 && uv.uvs[0][1] == 0.5);
+  CHECK(refuses(ply("s t s", "0.25 0.5 0.75"), "ply")); // which s?
+  CHECK(refuses(ply("x", "0"), "ply"));
+  CHECK(refuses(ply("s t", "nan 0.5"), "ply"));
+  CHECK(refuses(ply("s t", "0.5 -inf"), "ply"));
+  CHECK(!refuses(ply("nx ny nz", "nan nan nan"), "ply")); // what the reader does not take is not checked
+  const auto red = parse(ply("r g b red green blue", "0 0 0 1 0.2 1"), "ply"); // one family, not a mix
+  CHECK(red.colors.size() == 3 && red.colors[0][0] == 255 && red.colors[0][1] == 51 && red.colors[0][2] == 255);
 }
 
 int main()
@@ -398,5 +446,7 @@ int main()
   test_repairs_are_counted();
   test_written_files_read_back();
   test_texture_coordinates();
+  test_bad_obj_corners_are_refused();
+  test_ply_texture_names();
   return report("test_file_io");
 }

@@ -40,7 +40,9 @@ struct Input
   Mesh mesh;
   RSR::Input_repair_statistics repairs;
   double read_ms = 0, repair_ms = 0;
-  std::size_t uv_seam_vertices = 0; // vertices with several UVs: the UVs were dropped
+  // why the texture coordinates were dropped (see report_dropped_uvs())
+  std::size_t uv_seam_vertices = 0;   // vertices with several UVs
+  std::size_t uv_missing_corners = 0; // face corners without a UV where others have one
 };
 
 using rsr_io::Position;
@@ -85,10 +87,12 @@ inline std::size_t positions_with_several_uvs(const rsr_io::Polygon_soup& soup, 
   return std::size_t(std::count(on_seam.begin(), on_seam.end(), 1));
 }
 
-/// The soup's vertex colours and texture coordinates on `input.mesh`; UVs with a seam
-/// are dropped, with one line on stderr.
-inline void add_vertex_values(const rsr_io::Polygon_soup& soup, const std::string& path, Input& input)
+/// The soup's vertex colours and texture coordinates on `input.mesh`; UVs that are
+/// not one per vertex are dropped (counted in `input`, reported once the output is
+/// written by report_dropped_uvs(): a run that fails says only why).
+inline void add_vertex_values(const rsr_io::Polygon_soup& soup, Input& input)
 {
+  input.uv_missing_corners = soup.uv_missing_corners;
   if(soup.colors.empty() && soup.uvs.empty() && soup.uv_seam_points == 0)
     return;
   const Point_at point_at = first_point_at_each_position(soup);
@@ -99,14 +103,27 @@ inline void add_vertex_values(const rsr_io::Polygon_soup& soup, const std::strin
     }, "v:color", input.mesh);
   input.uv_seam_vertices =
       soup.uv_seam_points + (soup.uvs.empty() ? 0 : positions_with_several_uvs(soup, point_at));
-  if(input.uv_seam_vertices > 0)
-    std::cerr << "range_space_remesh: " << quote(path) << ": " << input.uv_seam_vertices
-              << (input.uv_seam_vertices == 1 ? " vertex has" : " vertices have")
-              << " several texture coordinates (a seam): the texture coordinates are dropped" << std::endl;
-  else if(!soup.uvs.empty())
+  if(input.uv_seam_vertices == 0 && !soup.uvs.empty())
     add_values_by_position<K::Point_2>(point_at, [&](std::size_t i) {
       return K::Point_2(soup.uvs[i][0], soup.uvs[i][1]);
     }, "v:uv", input.mesh);
+}
+
+/// One line on stderr when the input's texture coordinates were dropped.
+inline void report_dropped_uvs(const std::string& path, const Input& input)
+{
+  std::ostringstream line;
+  line << "range_space_remesh: " << quote(path) << ": ";
+  if(input.uv_seam_vertices > 0)
+    line << input.uv_seam_vertices << (input.uv_seam_vertices == 1 ? " vertex has" : " vertices have")
+         << " several texture coordinates (a seam)";
+  else if(input.uv_missing_corners > 0)
+    line << input.uv_missing_corners
+         << (input.uv_missing_corners == 1 ? " face corner has" : " face corners have")
+         << " no texture coordinate where others have one";
+  else
+    return;
+  std::cerr << line.str() << ": the texture coordinates are dropped" << std::endl;
 }
 
 /// Reads INPUT into a triangle mesh (see rsr_io::read_mesh_file): repaired into an
@@ -133,7 +150,7 @@ inline Input read_input(const std::string& path, bool strict)
   } catch(const RSR::Remeshing_error& e) {
     fail(quote(path) + ": " + e.what() + (strict ? " (drop --strict to repair it)" : ""));
   }
-  add_vertex_values(soup, path, input);
+  add_vertex_values(soup, input);
   const auto repaired = std::chrono::steady_clock::now();
   input.read_ms = std::chrono::duration<double, std::milli>(read - start).count();
   input.repair_ms = std::chrono::duration<double, std::milli>(repaired - read).count();

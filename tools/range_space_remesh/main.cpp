@@ -136,6 +136,7 @@ int run_program(int argc, char** argv)
   io.read_ms = read.read_ms;
   io.repair_ms = read.repair_ms;
   io.uv_seam_vertices = read.uv_seam_vertices;
+  io.uv_missing_corners = read.uv_missing_corners;
   const Mesh input = with_creases_opened(std::move(read.mesh), options);
   // once, the input read: the runs of --target-vertices and --preserve-topology share it
   const std::size_t cap = vertex_cap(options);
@@ -154,6 +155,7 @@ int run_program(int argc, char** argv)
   write_outputs(options, input, output, defects);
   io.write_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - write_start).count();
   report_repairs(options.input, read.repairs);
+  report_dropped_uvs(options.input, read);
   warn_about_topology(stats, options, defects);
   if(options.stats)
     print_stats(options, input, output, stats, h, read.repairs, io);

@@ -67,6 +67,9 @@ struct Polygon_soup
   /// points with several texture coordinates (on a texture seam): the UVs are then
   /// dropped, a vertex map cannot hold them
   std::size_t uv_seam_points = 0;
+  /// face corners without a texture coordinate in a file whose other corners have
+  /// one: the UVs are then dropped
+  std::size_t uv_missing_corners = 0;
 };
 
 /// The largest a soup can be, in bytes of memory per byte of file: a binary PLY face
@@ -390,7 +393,57 @@ struct Ply_element
   std::string name;
   std::uint64_t count = 0;
   std::vector<Ply_property> properties;
+
+  /// The index of the scalar property `name`, -1 if there is none.
+  int scalar(const char* name_) const
+  {
+    for(std::size_t p = 0; p < properties.size(); ++p)
+      if(!properties[p].is_list && properties[p].name == name_)
+        return int(p);
+    return -1;
+  }
 };
+
+/// Which property of a PLY element is what: -1 where absent.
+struct Ply_roles
+{
+  int coordinate[3] = {-1, -1, -1}, channel[3] = {-1, -1, -1}, texture[2] = {-1, -1}, indices = -1;
+};
+
+/// The first of `families` (names of N properties) whose N names are all scalar
+/// properties of `element`, into `index`; left at -1 if none is complete, so that
+/// names of different families ("s" and "v", "texture_u" and "t") never pair up.
+template <std::size_t N, std::size_t M>
+void find_family(const Ply_element& element, const std::array<std::array<const char*, N>, M>& families, int (&index)[N])
+{
+  for(const auto& family : families) {
+    int found[N];
+    for(std::size_t k = 0; k < N; ++k)
+      found[k] = element.scalar(family[k]);
+    if(std::all_of(std::begin(found), std::end(found), [](int i) { return i >= 0; })) {
+      std::copy(std::begin(found), std::end(found), index);
+      return;
+    }
+  }
+}
+
+/// What the reader takes from `element`: coordinates, colours (red green blue, then
+/// diffuse_..., then r g b) and texture coordinates (s t, then u v, texture_u
+/// texture_v, texture_s texture_t), and the list of vertex indices.
+inline Ply_roles roles_of(const Ply_element& element)
+{
+  Ply_roles roles;
+  find_family<3, 1>(element, {{{"x", "y", "z"}}}, roles.coordinate);
+  find_family<3, 3>(element, {{{"red", "green", "blue"}, {"diffuse_red", "diffuse_green", "diffuse_blue"}, {"r", "g", "b"}}},
+                    roles.channel);
+  find_family<2, 4>(element, {{{"s", "t"}, {"u", "v"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}}},
+                    roles.texture);
+  for(std::size_t p = 0; p < element.properties.size(); ++p)
+    if(element.properties[p].is_list &&
+       (element.properties[p].name == "vertex_indices" || element.properties[p].name == "vertex_index"))
+      roles.indices = int(p);
+  return roles;
+}
 
 /// Reads the scalars of a binary PLY body.
 class Binary_cursor
@@ -512,6 +565,10 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
       if(!ply_type_of(type, property.type))
         fail("unknown PLY property type '" + std::string(type) + "'" + where);
       property.name = std::string(header.word_in_line());
+      for(const Ply_property& before : elements.back().properties)
+        if(before.name == property.name) // which one would be meant?
+          fail("its PLY element '" + elements.back().name + "' has two properties named '" + property.name + "'" +
+               where);
       elements.back().properties.push_back(std::move(property));
     } else {
       fail("unknown PLY header keyword '" + std::string(keyword) + "'" + where);
@@ -534,25 +591,11 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
       minimum += values.minimum_size(property.is_list ? property.count_type : property.type);
     if(minimum == 0 ? element.count > 0 : element.count > values.bytes_left() / minimum)
       fail("it has fewer bytes than its " + std::to_string(element.count) + " '" + element.name + "' elements need");
-    // which property is what: -1 where absent
-    int coordinate[3] = {-1, -1, -1}, channel[3] = {-1, -1, -1}, texture[2] = {-1, -1}, indices = -1;
-    for(std::size_t p = 0; p < element.properties.size(); ++p) {
-      const Ply_property& property = element.properties[p];
-      const std::string& n = property.name;
-      const int i = int(p);
-      if(!property.is_list) {
-        if(n == "x") coordinate[0] = i;
-        else if(n == "y") coordinate[1] = i;
-        else if(n == "z") coordinate[2] = i;
-        else if(n == "red" || n == "r" || n == "diffuse_red") channel[0] = i;
-        else if(n == "green" || n == "g" || n == "diffuse_green") channel[1] = i;
-        else if(n == "blue" || n == "b" || n == "diffuse_blue") channel[2] = i;
-        else if(n == "s" || n == "u" || n == "texture_u" || n == "texture_s") texture[0] = i;
-        else if(n == "t" || n == "v" || n == "texture_v" || n == "texture_t") texture[1] = i;
-      } else if(n == "vertex_indices" || n == "vertex_index") {
-        indices = i;
-      }
-    }
+    const Ply_roles roles = roles_of(element);
+    const auto& coordinate = roles.coordinate;
+    const auto& channel = roles.channel;
+    const auto& texture = roles.texture;
+    const int indices = roles.indices;
     if(is_vertex && (coordinate[0] < 0 || coordinate[1] < 0 || coordinate[2] < 0))
       fail("its PLY vertices have no x, y and z");
     if(is_face && indices < 0)
@@ -585,8 +628,11 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
               color[std::size_t(c)] = color_channel(value, is_float(property.type));
           }
           for(int c = 0; c < 2; ++c)
-            if(texture[c] == int(p))
+            if(texture[c] == int(p) && is_vertex) {
+              if(!std::isfinite(value))
+                fail("its vertex " + std::to_string(e) + " has a texture coordinate that is not a finite number");
               uv[std::size_t(c)] = value;
+            }
           continue;
         }
         double length = 0;
@@ -628,45 +674,67 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
 
 // ------------------------------------------------------------------------ OBJ
 
-/// The texture coordinate of an OBJ face corner "i/t[/n]", counted from 1 (negative:
-/// back from the last one read, of `count`); 0 if it has none or a wrong one.
-inline std::size_t texture_index(std::string_view corner, std::size_t count)
+/// A corner of an OBJ face, "v", "v/t", "v//n" or "v/t/n": its indices as written
+/// (counted from 1; negative: back from the last one read), 0 where absent.
+struct Obj_corner
 {
-  const auto slash = corner.find('/');
-  if(slash == std::string_view::npos)
-    return 0;
-  const std::string_view rest = corner.substr(slash + 1);
-  long long t = 0;
-  if(!to_integer(rest.substr(0, rest.find('/')), t))
-    return 0;
-  if(t < 0)
-    t += static_cast<long long>(count) + 1;
-  return t >= 1 && t <= static_cast<long long>(count) ? std::size_t(t) : 0;
+  long long v = 0, t = 0, n = 0;
+};
+
+/// `word` as a corner; false unless it has one of the four forms with non-zero
+/// integers ("1/1/1/1", "1/x", "1/1.5" and "0" are not corners).
+inline bool parse_obj_corner(std::string_view word, Obj_corner& corner)
+{
+  long long* fields[3] = {&corner.v, &corner.t, &corner.n};
+  for(std::size_t k = 0; k < 3; ++k) {
+    const auto slash = word.find('/');
+    const std::string_view field = word.substr(0, slash);
+    const bool absent = k > 0 && field.empty();
+    if(!absent && (!to_integer(field, *fields[k]) || *fields[k] == 0))
+      return false;
+    if(slash == std::string_view::npos)
+      return true;
+    word.remove_prefix(slash + 1);
+  }
+  return false; // a fourth field
+}
+
+/// An OBJ index (see Obj_corner) among the `count` items read so far, from 1; 0 if
+/// it refers to none of them.
+inline std::size_t resolved_obj_index(long long index, std::size_t count)
+{
+  const long long n = static_cast<long long>(count);
+  if(index < 0)
+    index += n + 1;
+  return index >= 1 && index <= n ? std::size_t(index) : 0;
 }
 
 /// One UV per point from the corners' texture coordinates, into `soup.uvs`: kept only
-/// if every point of a face has one and only one (coinciding values count as one);
-/// the points with several are counted in `soup.uv_seam_points`.
+/// if every corner has one and each point only one (coinciding values count as one);
+/// otherwise the points with several are counted in `soup.uv_seam_points` and the
+/// corners with none in `soup.uv_missing_corners`.
 inline void uvs_of_corners(const std::vector<std::array<double, 2>>& texture_coordinates,
                            const std::vector<std::vector<std::size_t>>& corner_uvs, Polygon_soup& soup)
 {
   constexpr std::size_t none = 0;
   std::vector<std::size_t> uv_of(soup.points.size(), none);
   std::vector<std::uint8_t> on_seam(soup.points.size(), 0);
-  bool every_corner = true;
+  std::size_t corners_without = 0;
   for(std::size_t f = 0; f < soup.polygons.size(); ++f)
     for(std::size_t c = 0; c < soup.polygons[f].size(); ++c) {
       const std::size_t point = soup.polygons[f][c], uv = corner_uvs[f][c];
-      every_corner = every_corner && uv != none;
-      if(uv == none)
+      if(uv == none) {
+        ++corners_without;
         continue;
+      }
       if(uv_of[point] == none)
         uv_of[point] = uv;
       else if(texture_coordinates[uv_of[point] - 1] != texture_coordinates[uv - 1])
         on_seam[point] = 1;
     }
   soup.uv_seam_points = std::size_t(std::count(on_seam.begin(), on_seam.end(), 1));
-  if(!every_corner || soup.uv_seam_points > 0)
+  soup.uv_missing_corners = corners_without;
+  if(soup.uv_seam_points > 0 || corners_without > 0)
     return;
   soup.uvs.resize(soup.points.size(), {{0, 0}}); // a point of no face: unused
   for(std::size_t i = 0; i < soup.points.size(); ++i)
@@ -689,14 +757,23 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name)
   bool any_color = false;
   std::vector<std::array<double, 2>> texture_coordinates;
   std::vector<std::vector<std::size_t>> corner_uvs; // per polygon, per corner: a `vt`, or 0 for none
+  std::size_t normals = 0;                          // `vn` lines: only their number is checked
   for(std::size_t line = 1; !in.at_end(); ++line, in.next_line()) {
     const std::string_view keyword = in.word_in_line('#');
-    if(keyword == "vt") {
+    if(keyword == "vt") { // "vt u [v [w]]", v is 0 if absent
       std::array<double, 2> uv{};
-      for(double& x : uv)
-        if(!to_double(in.word_in_line('#'), x))
-          fail(line, "a texture coordinate has fewer than 2 numbers");
+      if(!to_double(in.word_in_line('#'), uv[0]))
+        fail(line, "a texture coordinate has no number");
+      const std::string_view v = in.word_in_line('#');
+      if(!v.empty() && !to_double(v, uv[1]))
+        fail(line, "a texture coordinate is not a number");
+      if(!std::isfinite(uv[0]) || !std::isfinite(uv[1]))
+        fail(line, "a texture coordinate is not a finite number");
       texture_coordinates.push_back(uv);
+      continue;
+    }
+    if(keyword == "vn") {
+      ++normals;
       continue;
     }
     if(keyword == "v") {
@@ -718,16 +795,20 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name)
     } else if(keyword == "f") {
       std::vector<std::size_t> polygon, uvs;
       for(std::string_view w; !(w = in.word_in_line('#')).empty();) {
-        uvs.push_back(texture_index(w, texture_coordinates.size()));
-        long long index = 0;
-        if(!to_integer(w.substr(0, w.find('/')), index) || index == 0)
-          fail(line, "a face has a vertex index that is not a non-zero integer");
-        const long long count = static_cast<long long>(soup.points.size());
-        if(index < 0)
-          index += count + 1; // relative to the vertices read so far
-        if(index < 1 || index > count)
+        Obj_corner corner;
+        if(!parse_obj_corner(w, corner))
+          fail(line, "a face corner '" + std::string(w.substr(0, 40)) +
+                         "' is not v, v/t, v//n or v/t/n with non-zero integers");
+        const std::size_t v = resolved_obj_index(corner.v, soup.points.size()),
+                          t = resolved_obj_index(corner.t, texture_coordinates.size());
+        if(v == 0)
           fail(line, "a face refers to a vertex not defined before it");
-        polygon.push_back(std::size_t(index - 1));
+        if(corner.t != 0 && t == 0)
+          fail(line, "a face refers to a texture coordinate not defined before it");
+        if(corner.n != 0 && resolved_obj_index(corner.n, normals) == 0)
+          fail(line, "a face refers to a normal not defined before it");
+        polygon.push_back(v - 1);
+        uvs.push_back(t);
       }
       soup.polygons.push_back(std::move(polygon));
       corner_uvs.push_back(std::move(uvs));

@@ -261,11 +261,13 @@ bool write_mesh(std::ostream& out, const Mesh& mesh, const std::string& ext, con
     return false;
   const auto precision = CGAL::parameters::stream_precision(options.precision);
   CGAL::IO::set_mode(out, options.binary && format->has_binary ? CGAL::IO::BINARY : CGAL::IO::ASCII);
+  if(!format->stores_colors)
+    colors = nullptr;
   if constexpr(!std::is_same<UVMap, internal::No_uvs>::value) {
-    if(uvs && format->format == Mesh_format::OBJ)
-      return internal::write_obj_with_uvs(out, mesh, *uvs, options.precision);
-    if(uvs && format->format == Mesh_format::PLY)
-      return write_mesh(out, internal::with_st_properties(mesh, *uvs), ext, colors, options);
+    if(uvs && format->stores_uvs)
+      return format->format == Mesh_format::OBJ
+                 ? internal::write_obj_with_uvs(out, mesh, *uvs, options.precision)
+                 : write_mesh(out, internal::with_st_properties(mesh, *uvs), ext, colors, options); // PLY: s t
   }
   switch(format->format) {
   case Mesh_format::STL: return CGAL::IO::write_STL(out, internal::triangulated_copy(mesh), precision);

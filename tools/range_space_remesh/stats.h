@@ -7,6 +7,7 @@
 #ifndef RANGE_SPACE_REMESHING_TOOLS_STATS_H
 #define RANGE_SPACE_REMESHING_TOOLS_STATS_H
 
+#include "mesh_formats.h"
 #include "mesh_types.h"
 #include "options.h"
 
@@ -50,7 +51,8 @@ inline std::size_t border_cycles(const Mesh& mesh)
 struct Io_times
 {
   double read_ms = 0, repair_ms = 0, write_ms = 0;
-  std::size_t uv_seam_vertices = 0; // what the reading dropped: UVs of a texture seam
+  // what the reading dropped the UVs for: a texture seam, corners without UVs
+  std::size_t uv_seam_vertices = 0, uv_missing_corners = 0;
 };
 
 inline void print_stats(const Options& options, const Mesh& input, const Mesh& output, const RSR::Remesh_statistics& all,
@@ -121,8 +123,11 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                    {"rounds", all.untangle.rounds},
                    {"tries", all.untangle.tries}};
   j["cell_size_used"] = s.cell_size;
-  j["texture_coordinates"] = {{"carried", find_vertex_uvs(output).has_value()},
-                              {"seam_vertices", io.uv_seam_vertices}};
+  const bool carried = find_vertex_uvs(output).has_value();
+  j["texture_coordinates"] = {{"carried", carried},
+                              {"written", carried && rsr_io::format_of(options.output)->stores_uvs},
+                              {"seam_vertices", io.uv_seam_vertices},
+                              {"corners_without", io.uv_missing_corners}};
   j["input_repairs"] = {{"repaired", repairs.repaired()},
                         {"merged_points", repairs.merged_points},
                         {"removed_isolated_points", repairs.removed_isolated_points},
