@@ -14,6 +14,7 @@
 #include "test_support.h"
 
 #include <CGAL/Range_space_remeshing/dualize.h>
+#include <CGAL/Range_space_remeshing/insert_crease_triangles.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -250,10 +251,75 @@ void test_remesh()
   CHECK(ratio <= 1);
 }
 
+/// Distance from p to the surface of m (all faces, brute force).
+double distance_to(const Mesh& m, const Point& p)
+{
+  return std::sqrt(CGAL::squared_distance(p, nearest_point_on(m, p)));
+}
+
+/// How far the positions carried by remesh() to the output of `input` are from being
+/// nearest points of `surface` (the input's surface divided by `scale`; its copies
+/// along the creases have none of their own), in units of `surface`: the largest of
+/// each carried point's distance to the surface and of how much farther it is from
+/// its output vertex than the surface is. Robust to ties (an output vertex inside a
+/// cube, as far from two faces).
+double carried_error(const Mesh& input, const Mesh& surface, double scale)
+{
+  Mesh quads;
+  auto carried = quads.add_property_map<Vertex, Point>("v:carried_point").first;
+  RSR::remesh(input, quads, params::grid_spacing(0.3 * scale).vertex_attribute_maps(input.points()),
+              params::vertex_attribute_maps(carried));
+  CHECK(num_vertices(quads) > 50);
+  auto unscaled = [scale](const Point& p) { return Point(p.x() / scale, p.y() / scale, p.z() / scale); };
+  double error = 0;
+  for(Vertex v : vertices(quads)) {
+    const Point p = unscaled(quads.point(v)), c = unscaled(get(carried, v));
+    const double off = distance_to(surface, c), farther = std::sqrt(CGAL::squared_distance(p, c)) - distance_to(surface, p);
+    CHECK(std::isfinite(off) && std::isfinite(farther));
+    error = (std::max)({error, off, farther});
+  }
+  return error;
+}
+
+/// Attributes sampled on the zero-area triangles of opened creases (the nearest point
+/// of an output vertex near an edge of a cube is often on one: it took the values of
+/// the triangle's first corner, a whole edge away) and on inputs of extreme scale
+/// (coordinates of 1e160 or 1e-160, or one far vertex at 1e200: the nearest-point
+/// search's exact fallback got a non-finite number and GMP stopped the process).
+void test_flat_triangles_and_extreme_scales()
+{
+  const Mesh cube = make_lattice_cube(2);
+  Mesh creased;
+  RSR::insert_crease_triangles(cube, creased, 30.0);
+  CHECK(num_faces(creased) > num_faces(cube));
+  const double flat = carried_error(creased, cube, 1.0);
+  std::cout << "remesh, cube with opened creases: carried positions off the nearest points by " << flat
+            << " edge lengths" << std::endl;
+  CHECK(flat < 1e-12);
+  for(double scale : {1e160, 1e-160}) {
+    Mesh big = creased;
+    for(Vertex v : vertices(big))
+      big.point(v) = Point(big.point(v).x() * scale, big.point(v).y() * scale, big.point(v).z() * scale);
+    const double scaled = carried_error(big, cube, scale);
+    std::cout << "remesh, cube scaled by " << scale << ": off by " << scaled << " edge lengths" << std::endl;
+    CHECK(scaled < 1e-12);
+  }
+  Mesh far = make_lattice_cube(2); // one corner pulled to 1e200: the rest is a speck beside it
+  far.point(*vertices(far).begin()) = Point(0, 0, 1e200);
+  Mesh quads;
+  auto carried = quads.add_property_map<Vertex, Point>("v:carried_point").first;
+  RSR::remesh(far, quads, params::grid_spacing(1e198).vertex_attribute_maps(far.points()),
+              params::vertex_attribute_maps(carried));
+  for(Vertex v : vertices(quads))
+    CHECK(std::isfinite(get(carried, v).z()));
+  std::cout << "remesh, one vertex at 1e200: " << num_vertices(quads) << " vertices" << std::endl;
+}
+
 int main()
 {
   test_primal();
   test_dual();
   test_remesh();
+  test_flat_triangles_and_extreme_scales();
   return report("test_attributes");
 }

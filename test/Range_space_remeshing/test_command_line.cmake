@@ -911,6 +911,26 @@ file(WRITE ${WORK_DIR}/uv_nan.ply "ply\nformat ascii 1.0\nelement vertex 6\nprop
      "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n")
 run(2 uv_nan_out.obj uv_nan.ply uv_nan_out.obj)
 expect_message("texture coordinate that is not a finite number" "PLY NaN UV")
+# an unused point where a used one is, with another UV, is no seam (its UV is no
+# vertex's); nor are two points at one position whose UVs are a unit in the last place
+# apart, as the program's own outputs have them at the copies of a crease
+file(WRITE ${WORK_DIR}/uv_unused.obj "${octahedron_v}v 1.1 0 0\n${octahedron_vt}vt 0.3 0.3\n${octahedron_f}")
+run(0 uv_unused_out.obj --stats --cell-size 0.05 uv_unused.obj uv_unused_out.obj)
+expect_json(ON texture_coordinates carried)
+expect_json(0 texture_coordinates seam_vertices)
+string(REPLACE "f 1/1 3/3 5/5\n" "f 7/8 3/3 5/5\n" ulp_faces "${octahedron_f}")
+file(WRITE ${WORK_DIR}/uv_ulp.obj "${octahedron_v}v 1.1 0 0\n${octahedron_vt}vt 0.3 0.3\nvt 1.1000000000000003 0\n${ulp_faces}")
+run(0 uv_ulp_out.obj --stats --cell-size 0.05 uv_ulp.obj uv_ulp_out.obj)
+expect_json(ON texture_coordinates carried)
+expect_json(0 texture_coordinates seam_vertices)
+# points at one position merged: --strict keeps them apart, it does not refuse them
+file(WRITE ${WORK_DIR}/split_square.off "OFF\n8 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n1 0 0\n2 0 0\n2 1 0\n1 1 0\n"
+     "4 0 1 2 3\n4 4 5 6 7\n")
+run(0 NONE --stats --output primal --cell-size 0.2 split_square.off split_square_out.off)
+if(NOT err MATCHES "2 merged points \\(--strict keeps such points apart\\)")
+  message(SEND_ERROR "merged points: the repair line should say --strict keeps them apart, got: ${err}")
+  math(EXPR failures "${failures} + 1")
+endif()
 # a format without UVs: --stats says they were not written
 run(0 uv_out.off --stats --cell-size 0.05 uv.obj uv_out.off)
 expect_json(ON texture_coordinates carried)

@@ -389,6 +389,16 @@ void test_texture_coordinates()
   CHECK(partial.uvs.empty() && partial.uv_seam_points == 0 && partial.uv_missing_corners == 3);
   const auto relative = parse(obj_v + "f 1/-5 2/-4 3/-3\nf 2/-4 4/-2 3/-3\n", "obj");
   CHECK(relative.uvs.size() == 4 && relative.uvs[3][0] == 1 && relative.uvs[3][1] == 1);
+  // `vt` lines no corner uses: no UVs, and none dropped
+  const auto unused = parse(obj_v + "f 1 2 3\nf 2 4 3\n", "obj");
+  CHECK(unused.uvs.empty() && unused.uv_missing_corners == 0 && unused.uv_seam_points == 0);
+  // UVs of one point a few units in the last place apart are one UV, not a seam
+  const auto close = parse(obj_v + "vt 0.1 0.7\nvt 0.10000000000000002 0.7\nf 1/6 2/2 3/3\nf 2/2 4/4 1/7\n", "obj");
+  CHECK(close.uvs.size() == 4 && close.uv_seam_points == 0 && close.uvs[0][0] == 0.1);
+  // a UTF-8 byte-order mark before a text file
+  const auto marked = parse("\xEF\xBB\xBF" + obj_v + "f 1/1 2/2 3/3\n", "obj");
+  CHECK(marked.points.size() == 4 && marked.uvs.size() == 4);
+  CHECK(parse("\xEF\xBB\xBF" + octahedron_off(), "off").polygons.size() == 8);
   // "vt u" alone: v is 0
   const auto one_number = parse("v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0.5\nvt 1 1\nf 1/1 2/2 3/1\n", "obj");
   CHECK(one_number.uvs.size() == 3 && one_number.uvs[0][0] == 0.5 && one_number.uvs[0][1] == 0);
@@ -399,14 +409,14 @@ void test_texture_coordinates()
 void test_bad_obj_corners_are_refused()
 {
   const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\n";
-  CHECK(!refuses(obj + "f 1/1 2/2 3/3\nf 1/-3/1 2//-1 3/3/1\nf 1/ 2// 3\n", "obj"));
+  CHECK(!refuses(obj + "f 1/1 2/2 3/3\nf 1/-3/1 2//-1 3/3/1\nf 1 2 3\n", "obj"));
   for(const char* corner : {"3/0", "3/4", "3/-4", "3/-7", "3/99999999999999999999", "3/x", "3/1.5", "3/1x",
-                            "3/1/1/1", "3/1/2", "3//9", "3/1/q", "3/1/0", "3/+", "/1"})
+                            "3/1/1/1", "3/1/2", "3//9", "3/1/q", "3/1/0", "3/+", "/1", "3/", "3//", "3/1/"})
     if(!refuses(obj + "f 1/1 2/2 " + corner + "\n", "obj")) {
       std::cerr << "corner '" << corner << "' accepted" << std::endl;
       CHECK(false);
     }
-  CHECK(!refuses(obj + "f 1/1 2/2 3//\n", "obj")); // "v//": neither given
+  CHECK(refuses("v 0 0 0\nvt 0 0 x\n", "obj")); // w, unused, must still be a number
   CHECK(refuses("v 0 0 0\nvt nan 0\n", "obj"));
   CHECK(refuses("v 0 0 0\nvt 0 inf\n", "obj"));
   CHECK(refuses("v 0 0 0\nvt 0 x\n", "obj"));

@@ -47,15 +47,22 @@ struct Input
 
 using rsr_io::Position;
 using rsr_io::Position_hash;
-/// The first point of the soup at each position.
 using Point_at = std::unordered_map<Position, std::size_t, Position_hash>;
 
+/// The first point of the soup's polygons at each position: the repair removes the
+/// points no polygon uses, so their values (a colour, a UV) are no vertex's.
 inline Point_at first_point_at_each_position(const rsr_io::Polygon_soup& soup)
 {
+  std::vector<std::uint8_t> used(soup.points.size(), 0);
+  for(const auto& polygon : soup.polygons)
+    for(std::size_t i : polygon)
+      if(i < used.size())
+        used[i] = 1;
   Point_at point_at;
   point_at.reserve(soup.points.size());
   for(std::size_t i = 0; i < soup.points.size(); ++i)
-    point_at.emplace(soup.points[i], i);
+    if(used[i])
+      point_at.emplace(soup.points[i], i);
   return point_at;
 }
 
@@ -74,37 +81,56 @@ void add_values_by_position(const Point_at& point_at, const ValueOf& value_of, c
   }
 }
 
-/// The positions whose points have different UVs: a texture seam given as copies of
-/// its points, which the repair merges into one vertex.
+/// The positions whose points (of polygons) have different UVs: a texture seam given
+/// as copies of its points, which the repair merges into one vertex.
 inline std::size_t positions_with_several_uvs(const rsr_io::Polygon_soup& soup, const Point_at& point_at)
 {
   std::vector<std::uint8_t> on_seam(soup.points.size(), 0);
-  for(std::size_t i = 0; i < soup.points.size(); ++i) {
-    const std::size_t first = point_at.at(soup.points[i]);
-    if(soup.uvs[i] != soup.uvs[first])
-      on_seam[first] = 1;
-  }
+  for(const auto& polygon : soup.polygons)
+    for(std::size_t i : polygon) {
+      const std::size_t first = point_at.at(soup.points[i]);
+      if(!rsr_io::same_uv(soup.uvs[i], soup.uvs[first]))
+        on_seam[first] = 1;
+    }
   return std::size_t(std::count(on_seam.begin(), on_seam.end(), 1));
+}
+
+/// Where the soup's vertex values come from, found before the repair renumbers its
+/// polygons: the point that gives each position its values, and the positions with
+/// several UVs.
+struct Soup_values
+{
+  Point_at point_at; // empty if the soup has no colours and no UVs
+  std::size_t uv_seam_vertices = 0;
+};
+
+inline Soup_values soup_values(const rsr_io::Polygon_soup& soup)
+{
+  Soup_values values;
+  if(soup.colors.empty() && soup.uvs.empty())
+    values.uv_seam_vertices = soup.uv_seam_points;
+  else {
+    values.point_at = first_point_at_each_position(soup);
+    values.uv_seam_vertices =
+        soup.uv_seam_points + (soup.uvs.empty() ? 0 : positions_with_several_uvs(soup, values.point_at));
+  }
+  return values;
 }
 
 /// The soup's vertex colours and texture coordinates on `input.mesh`; UVs that are
 /// not one per vertex are dropped (counted in `input`, reported once the output is
 /// written by report_dropped_uvs(): a run that fails says only why).
-inline void add_vertex_values(const rsr_io::Polygon_soup& soup, Input& input)
+inline void add_vertex_values(const rsr_io::Polygon_soup& soup, const Soup_values& values, Input& input)
 {
   input.uv_missing_corners = soup.uv_missing_corners;
-  if(soup.colors.empty() && soup.uvs.empty() && soup.uv_seam_points == 0)
-    return;
-  const Point_at point_at = first_point_at_each_position(soup);
+  input.uv_seam_vertices = values.uv_seam_vertices;
   if(!soup.colors.empty())
-    add_values_by_position<CGAL::IO::Color>(point_at, [&](std::size_t i) {
+    add_values_by_position<CGAL::IO::Color>(values.point_at, [&](std::size_t i) {
       const auto& c = soup.colors[i];
       return CGAL::IO::Color(c[0], c[1], c[2]);
     }, "v:color", input.mesh);
-  input.uv_seam_vertices =
-      soup.uv_seam_points + (soup.uvs.empty() ? 0 : positions_with_several_uvs(soup, point_at));
   if(input.uv_seam_vertices == 0 && !soup.uvs.empty())
-    add_values_by_position<K::Point_2>(point_at, [&](std::size_t i) {
+    add_values_by_position<K::Point_2>(values.point_at, [&](std::size_t i) {
       return K::Point_2(soup.uvs[i][0], soup.uvs[i][1]);
     }, "v:uv", input.mesh);
 }
@@ -144,13 +170,14 @@ inline Input read_input(const std::string& path, bool strict)
   points.reserve(soup.points.size());
   for(const auto& p : soup.points)
     points.emplace_back(p[0], p[1], p[2]);
+  const Soup_values values = soup_values(soup);
   try {
     input.repairs = RSR::prepare_input(points, soup.polygons, input.mesh,
                                        strict ? RSR::Input_repair::REFUSE : RSR::Input_repair::REPAIR);
   } catch(const RSR::Remeshing_error& e) {
     fail(quote(path) + ": " + e.what() + (strict ? " (drop --strict to repair it)" : ""));
   }
-  add_vertex_values(soup, input);
+  add_vertex_values(soup, values, input);
   const auto repaired = std::chrono::steady_clock::now();
   input.read_ms = std::chrono::duration<double, std::milli>(read - start).count();
   input.repair_ms = std::chrono::duration<double, std::milli>(repaired - read).count();
@@ -180,7 +207,15 @@ inline void report_repairs(const std::string& path, const RSR::Input_repair_stat
       line << separator << count << " " << what;
       separator = ", ";
     }
-  std::cerr << line.str() << (r.repaired() ? " (--strict refuses such input)" : "") << std::endl;
+  // --strict takes a mesh with points at one position as it is, and refuses the rest
+  const bool only_merged = r.merged_points > 0 && r.removed_repeated_corners + r.removed_degenerate_polygons +
+                                                           r.removed_duplicate_polygons + r.reversed_polygons +
+                                                           r.reversed_to_face_outward + r.non_manifold_edges +
+                                                           r.split_non_manifold_points ==
+                                                       0;
+  std::cerr << line.str()
+            << (only_merged ? " (--strict keeps such points apart)" : r.repaired() ? " (--strict refuses such input)" : "")
+            << std::endl;
 }
 
 /// The values of `map` (if any) on `from`, as the property `name` of `to`'s vertices at

@@ -72,6 +72,18 @@ struct Polygon_soup
   std::size_t uv_missing_corners = 0;
 };
 
+/// Whether two texture coordinates of one point are the same one: apart by at most a
+/// billionth of their size (of 1 if smaller), far below a texel. Exact equality would
+/// see seams where an exporter or an interpolation (the program's own output at the
+/// copies of a crease) left the UVs of one point a few units in the last place apart.
+inline bool same_uv(const std::array<double, 2>& a, const std::array<double, 2>& b)
+{
+  for(std::size_t k = 0; k < 2; ++k)
+    if(!(std::abs(a[k] - b[k]) <= 1e-9 * std::max({1., std::abs(a[k]), std::abs(b[k])})))
+      return false;
+  return true;
+}
+
 /// The largest a soup can be, in bytes of memory per byte of file: a binary PLY face
 /// of three one-byte indices (4 bytes of file) becomes a vector of three indices
 /// (24 bytes, plus the vector and the allocator's header: about 64 bytes).
@@ -682,15 +694,15 @@ struct Obj_corner
 };
 
 /// `word` as a corner; false unless it has one of the four forms with non-zero
-/// integers ("1/1/1/1", "1/x", "1/1.5" and "0" are not corners).
+/// integers ("1/1/1/1", "1/x", "1/1.5", "0", "1/", "1//" and "1/1/" are not corners).
 inline bool parse_obj_corner(std::string_view word, Obj_corner& corner)
 {
   long long* fields[3] = {&corner.v, &corner.t, &corner.n};
   for(std::size_t k = 0; k < 3; ++k) {
     const auto slash = word.find('/');
     const std::string_view field = word.substr(0, slash);
-    const bool absent = k > 0 && field.empty();
-    if(!absent && (!to_integer(field, *fields[k]) || *fields[k] == 0))
+    const bool absent_t = k == 1 && field.empty() && slash != std::string_view::npos; // "v//n"
+    if(!absent_t && (!to_integer(field, *fields[k]) || *fields[k] == 0))
       return false;
     if(slash == std::string_view::npos)
       return true;
@@ -729,10 +741,13 @@ inline void uvs_of_corners(const std::vector<std::array<double, 2>>& texture_coo
       }
       if(uv_of[point] == none)
         uv_of[point] = uv;
-      else if(texture_coordinates[uv_of[point] - 1] != texture_coordinates[uv - 1])
+      else if(!same_uv(texture_coordinates[uv_of[point] - 1], texture_coordinates[uv - 1]))
         on_seam[point] = 1;
     }
   soup.uv_seam_points = std::size_t(std::count(on_seam.begin(), on_seam.end(), 1));
+  const bool any_corner = std::any_of(uv_of.begin(), uv_of.end(), [](std::size_t uv) { return uv != none; });
+  if(!any_corner) // `vt` lines no face uses: the file gives no vertex a UV
+    return;
   soup.uv_missing_corners = corners_without;
   if(soup.uv_seam_points > 0 || corners_without > 0)
     return;
@@ -764,8 +779,9 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name)
       std::array<double, 2> uv{};
       if(!to_double(in.word_in_line('#'), uv[0]))
         fail(line, "a texture coordinate has no number");
-      const std::string_view v = in.word_in_line('#');
-      if(!v.empty() && !to_double(v, uv[1]))
+      const std::string_view v = in.word_in_line('#'), w = in.word_in_line('#');
+      double depth = 0; // w, unused
+      if((!v.empty() && !to_double(v, uv[1])) || (!w.empty() && !to_double(w, depth)))
         fail(line, "a texture coordinate is not a number");
       if(!std::isfinite(uv[0]) || !std::isfinite(uv[1]))
         fail(line, "a texture coordinate is not a finite number");
@@ -921,6 +937,11 @@ inline Polygon_soup parse_mesh(std::string_view text, const std::string& extensi
   const auto format = format_with_extension(extension);
   if(!format)
     throw Read_error(name + ": unsupported format (use " + supported_extensions() + ")");
+  // a UTF-8 byte-order mark, which some Windows editors write before a text file
+  constexpr std::string_view byte_order_mark = "\xEF\xBB\xBF";
+  if((format->format == Mesh_format::OFF || format->format == Mesh_format::OBJ) &&
+     text.substr(0, byte_order_mark.size()) == byte_order_mark)
+    text.remove_prefix(byte_order_mark.size());
   switch(format->format) {
   case Mesh_format::OFF: return read_off(text, name);
   case Mesh_format::PLY: return read_ply(text, name);
