@@ -29,6 +29,7 @@
 #include <CGAL/Range_space_remeshing/remesh.h>
 
 #include "benchmark_support.h"
+#include "output_measures.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -95,6 +96,8 @@ struct Quality
   double rms = NAN, hausdorff = NAN; // relative to the input's bounding-box diagonal
   double regular_percent = NAN;      // valence 4 for quads, 6 for triangle meshes
   double min_angle = NAN;            // smallest corner angle of any face, degrees
+  output_measures::Shape shape;      // folded faces, non-quads, corner-angle percentile
+  std::string topology;              // "kept", or what changed
 };
 
 double min_corner_angle(const Mesh& m)
@@ -122,6 +125,8 @@ Quality quality(const Mesh& output, const Mesh& input, double diagonal, std::siz
     regular += (degree(v, output) == regular_valence);
   q.regular_percent = 100. * double(regular) / double(num_vertices(output));
   q.min_angle = min_corner_angle(output);
+  q.shape = output_measures::shape_of(output);
+  q.topology = output_measures::topology_change(output_measures::topology_of(input), output_measures::topology_of(output));
   Mesh triangles = output;
   triangulate_all_faces(triangles);
   const auto forward = rms_and_max_distance(triangles, input, 200000);
@@ -131,12 +136,29 @@ Quality quality(const Mesh& output, const Mesh& input, double diagonal, std::siz
   return q;
 }
 
+/// Folded or non-convex quads (folded triangles in a triangle mesh), non-quads, the
+/// 1st percentile of the corner angles, the topology against the input's.
+std::string shape_columns(const Quality& q)
+{
+  const auto& s = q.shape;
+  const bool quads = s.quads > 0;
+  const std::size_t bad = quads ? s.bad_quads : s.folded_triangles, of = quads ? s.quads : s.triangles;
+  return format("%zu (%.2f %%) | %s | %.1f° | %s", bad, of > 0 ? 100. * double(bad) / double(of) : 0.,
+                quads ? std::to_string(s.non_quads).c_str() : "–", s.angle_p1, q.topology.c_str());
+}
+
 std::string quality_columns(const Quality& q)
 {
   if(std::isnan(q.rms)) // an empty output
-    return format("– | – | %.1f %% | %.1f°", q.regular_percent, q.min_angle);
-  return format("%.3g | %.3g | %.1f %% | %.1f°", q.rms, q.hausdorff, q.regular_percent, q.min_angle);
+    return format("– | – | %.1f %% | %.1f° | – | – | – | –", q.regular_percent, q.min_angle);
+  return format("%.3g | %.3g | %.1f %% | %.1f° | ", q.rms, q.hausdorff, q.regular_percent, q.min_angle) +
+         shape_columns(q);
 }
+
+/// The header cells of quality_columns().
+const char* const quality_header = "RMS | Hausdorff | regular vertices | min angle | folded or non-convex | "
+                                   "non-quads | 1st-pct angle | topology |";
+const char* const quality_rule = "---:|---:|---:|---:|---:|---:|---:|---|";
 
 /// One face per connected component: the seeds a caller computes once and passes to
 /// every frame's seeded traversal.
@@ -291,8 +313,9 @@ std::vector<Pipeline_result> table_pipeline(std::vector<Model>& models, int runs
                "contour time includes the input's vertex normals (`compute_vertex_normals()`, one pass over the "
                "faces, run every time).\n\n"
                "| model | n | input triangles | cell size (diagonals) | primal vertices | output quads | contour ms | "
-               "dual ms | collapse ms | relax ms | **total ms** | best ms | RMS | Hausdorff | valence 4 | min angle |\n"
-               "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+               "dual ms | collapse ms | relax ms | **total ms** | best ms | "
+            << quality_header << "\n|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|" << quality_rule
+            << "\n";
   std::vector<Pipeline_result> six;
   for(Model& model : models) {
     Mesh& input = model.mesh;
@@ -355,9 +378,13 @@ void table_peers(const std::vector<Model>& models, const std::vector<Pipeline_re
                "vertices: valence 4 in quad meshes, 6 in triangle meshes. Distances of polygon meshes: of "
                "their triangulation by PMP (quads split along a diagonal, larger faces filled as holes in 3-D), "
                "where a face it cannot triangulate (a non-planar polygon whose projection crosses itself: a few "
-               "primal polygons, and faces the dual joins) is a fan from one corner.\n\n"
-               "| model | method | output vertices | ms | best ms | speed-up | RMS | Hausdorff | regular vertices | min angle |\n"
-               "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+               "primal polygons, and faces the dual joins) is a fan from one corner. Folded or non-convex: "
+               "quads by the corner criterion of issue 39 (`output_measures.h`), triangles whose normal is "
+               "against the sum of their edge neighbours'; the % is of the quads (triangles); 1st-pct angle: "
+               "the 1st percentile of the quads' (triangles') corner angles; topology: Euler characteristic, "
+               "components and border cycles against the input's.\n\n"
+               "| model | method | output vertices | ms | best ms | speed-up | "
+            << quality_header << "\n|---|---|---:|---:|---:|---:|" << quality_rule << "\n";
   for(std::size_t i = 0; i < models.size(); ++i) {
     const Model& model = models[i];
     const Mesh& input = model.mesh;
