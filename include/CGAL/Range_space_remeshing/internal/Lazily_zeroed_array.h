@@ -10,12 +10,11 @@
 // std::vector<T>(n) writes all n entries, which makes every run linear in the input
 // however few of its faces the arcs cross. Memory fresh from the system is zero and
 // costs nothing until a page of it is touched; but the traversal's entries are spread
-// over the whole index range (on refined_elephant subdivided three times, 0.6 of 5.7
-// million faces are visited, and they touch nearly every 4 KB page of the face
-// records: 61,000 page faults, about 100 ms of a 360 ms run). Large arrays are
-// therefore mapped with transparent huge pages where Linux offers them (2 MB, zeroed
-// by the kernel at about memset speed: 260 ms for the same run). Smaller ones stay
-// with malloc / calloc.
+// over the whole index range, so that a small share of the faces touches nearly
+// every 4 KB page of the face records, each a page fault. Large arrays are therefore
+// mapped with transparent huge pages where Linux offers them (2 MB, zeroed by the
+// kernel at about memset speed). Smaller ones stay with malloc / calloc. (The
+// measurements behind this: benchmark/RESULTS.md.)
 
 #include <cstddef>
 #include <cstdlib>

@@ -9,13 +9,14 @@
 // remesh() keeps each quad vertex's tangent planes from the dual to the relaxation.
 // As a vertex property of a `Surface_mesh` holding the lists themselves, they are
 // copied, list by list, each time the mesh collects its garbage (`Property_array`
-// swaps by copy and shrinks by copying the whole array): 3 % of the pipeline's
-// instructions. Here the mesh's property holds only a slot number, which garbage
-// collection moves like any integer, and the lists stay in a pool.
+// swaps by copy and shrinks by copying the whole array). Here the mesh's property
+// holds only a slot number, which garbage collection moves like any integer, and the
+// lists stay in a pool.
 //
 // The pool also keeps, per slot, the eigen-decomposition of the quadric of the list
 // that the dual made for its placement: the relaxation needs the same one for every
-// vertex the collapse did not merge (2.5 % of the pipeline's instructions).
+// vertex the collapse did not merge, and need not compute it again. (What each saves:
+// benchmark/RESULTS.md.)
 
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>

@@ -186,8 +186,8 @@ private:
   /// order, so grouping them by `has_priority()`'s classes with a stable counting sort
   /// keeps the sweep order within each class; only the rotations of one quad (at most
   /// four, side by side) can be left out of rank order, which an insertion sort mends
-  /// in linear time. (A comparison sort compared candidates about a million times in
-  /// the first pass: 1.2 % of the pipeline's instructions on refined_elephant, R^6.)
+  /// in linear time, where a comparison sort compares the first pass's candidates
+  /// about a million times on a large input (see benchmark/RESULTS.md).
   void sort_for_sweep(std::vector<Candidate>& candidates)
   {
     if(!group_by_priority_class(candidates)) {
