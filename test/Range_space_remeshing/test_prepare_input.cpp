@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <set>
 #include <string>
 #include <vector>
@@ -157,6 +158,33 @@ void test_quadrilaterals_around_a_vertex_of_valence_2()
   CHECK(borders_of(mesh) == std::vector<std::size_t>{4});
 }
 
+/// The linear sort of the soup's edges gives the order of a comparison sort by (key,
+/// corner): random soups of triangles to hexagons over few points (repeated keys, some
+/// runs of more than two) with a hub named by many polygons (a run longer than the
+/// insertion sort takes).
+void test_sorted_polygon_edges()
+{
+  std::mt19937 random(7);
+  for(int trial = 0; trial < 50; ++trial) {
+    const std::size_t points = 2 + std::size_t(trial) * 3;
+    Polygons polygons(200);
+    for(auto& polygon : polygons) {
+      polygon.resize(3 + random() % 4);
+      for(std::size_t& v : polygon)
+        v = random() % 3 == 0 ? points / 2 : random() % points;
+    }
+    const RSR::internal::Soup_corners corners(polygons);
+    const auto edges = RSR::internal::sorted_polygon_edges(corners);
+    auto expected = edges;
+    std::sort(expected.begin(), expected.end());
+    bool same = edges.size() == corners.size();
+    for(std::size_t i = 0; same && i < edges.size(); ++i)
+      same = edges[i].key == expected[i].key && edges[i].corner == expected[i].corner &&
+             edges[i].forward == expected[i].forward;
+    CHECK(same);
+  }
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -168,5 +196,6 @@ int main(int argc, char** argv)
   test_same_mesh_as_cgal(argv[1]);
   test_vertex_of_huge_valence();
   test_quadrilaterals_around_a_vertex_of_valence_2();
+  test_sorted_polygon_edges();
   return report("test_prepare_input");
 }

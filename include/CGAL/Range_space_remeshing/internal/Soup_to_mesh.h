@@ -78,15 +78,15 @@ public:
     for(std::size_t i = 0; i < edges.size(); ++i)
       if(i == 0 || edges[i].key != edges[i - 1].key)
         run_starts.push_back(i);
-    // in a run the corners are increasing: the first is the first corner along the edge
-    std::vector<std::size_t> order(run_starts.size());
-    for(std::size_t r = 0; r < run_starts.size(); ++r)
-      order[r] = r;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return edges[run_starts[a]].corner < edges[run_starts[b]].corner;
-    });
-    for(std::size_t r : order) {
-      const std::size_t i = run_starts[r];
+    // in a run the corners are increasing: the first is the first corner along the
+    // edge; the runs in the order of their first corners, by marking those corners
+    constexpr std::size_t none = std::size_t(-1);
+    std::vector<std::size_t> run_first_at(corners_.size(), none);
+    for(std::size_t i : run_starts)
+      run_first_at[edges[i].corner] = i;
+    for(std::size_t i : run_first_at) {
+      if(i == none)
+        continue;
       const std::size_t c = edges[i].corner;
       const halfedge_descriptor h = halfedge(add_edge(mesh_), mesh_);
       set_target(h, vertex_of_[corners_.point_of[corners_.next_of[c]]], mesh_);
