@@ -207,10 +207,23 @@ private:
   Local_quality local_quality(std::size_t i) const
   {
     Local_quality quality{1, 0};
-    for(std::size_t k : incident(i))
+    beats(i, Local_quality{-2, 0}, quality); // every quality beats a least corner of -2
+    return quality;
+  }
+
+  // Whether the local quality of vertex i (into `quality`) beats `bound`; stops at the
+  // first face whose least corner is below bound's, which no later face can mend: most
+  // of the places a vertex tries are worse, and this is the search's inner loop.
+  bool beats(std::size_t i, const Local_quality& bound, Local_quality& quality) const
+  {
+    quality = Local_quality{1, 0};
+    for(std::size_t k : incident(i)) {
       quality.worst =
           (std::min)(quality.worst, corner_quality(fc_, k, position_, normal_, corner_cap, quality.capped_sum));
-    return quality;
+      if(quality.worst < bound.worst)
+        return false;
+    }
+    return quality > bound;
   }
 
   // Where vertex i might go: the centroid of the other corners of its faces, and for
@@ -296,8 +309,8 @@ private:
         position_[i] = place_(i, sum(start, scaled(difference(target, start), step)));
         if(position_[i] == start)
           continue;
-        const Local_quality quality = local_quality(i);
-        if(quality > best_quality && !makes_a_face_worse(i, before)) {
+        Local_quality quality;
+        if(beats(i, best_quality, quality) && !makes_a_face_worse(i, before)) {
           best_quality = quality;
           best = position_[i];
         }
