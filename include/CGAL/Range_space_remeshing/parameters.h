@@ -158,6 +158,24 @@ CGAL_RANGE_SPACE_REMESHING_EACH_PARAMETER(CGAL_RANGE_SPACE_REMESHING_FREE_FUNCTI
 
 } // namespace parameters
 
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+The default cap on the intersection vertices of a remesh (named parameter
+`maximum_number`). A cell size far too small for the input is refused with a
+`Remeshing_error` rather than exhausting the memory: at about 1.3 KB per vertex for the
+whole pipeline (`remesh()`, measured on CGAL's refined_elephant), this cap keeps a run
+within about 13 GB.
+*/
+constexpr std::size_t default_maximum_number_of_vertices = 10000000;
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+The cell size used when none is given (named parameters `grid_spacing` and
+`number_of_target_vertices` absent), as a fraction of the diagonal of the bounding box of
+the mapped input (of f(v) over the input vertices on a face).
+*/
+constexpr double default_relative_cell_size = 0.01;
+
 namespace internal {
 
 // The tags of a pack, from the last added to the first.

@@ -122,12 +122,10 @@ public:
       if(!is_border(b, tm) || walked[border_key(border_edge_of(opposite(b, tm)))])
         continue;
       bool crossed = false;
-      for(halfedge_descriptor c : CGAL::halfedges_around_face(b, tm)) {
-        const std::uint64_t key = border_key(border_edge_of(opposite(c, tm)));
-        walked[key] = 1;
+      walk_border_cycle(b, walked, [&](std::uint64_t key) {
         const auto found = crossings_.find(key);
         crossed = crossed || (found != crossings_.end() && !found->second.empty());
-      }
+      });
       uncrossed += crossed ? 0 : 1;
     }
     return uncrossed;
@@ -145,9 +143,7 @@ public:
         if(input_.record_of(f).neighbour[e] != Input::border || walked_border_[border_key({f, e})])
           continue;
         ++border_cycles_of_empty_components_;
-        const halfedge_descriptor start = opposite(input_.halfedge_of(f, e), tm);
-        for(halfedge_descriptor c : CGAL::halfedges_around_face(start, tm))
-          walked_border_[border_key(border_edge_of(opposite(c, tm)))] = 1;
+        walk_border_cycle(opposite(input_.halfedge_of(f, e), tm), walked_border_, [](std::uint64_t) {});
       }
   }
 
@@ -157,6 +153,20 @@ public:
 
 private:
   static std::uint64_t border_key(const Border_edge& b) { return 3 * std::uint64_t(b.face_id) + b.e; }
+
+  /// Walks the border cycle of the border halfedge `b`: marks each of its edges in
+  /// `walked` (by border_key()), so that the cycle is walked once, and shows its key
+  /// to `visit`. The one walk of a whole border cycle of the input.
+  template <class Walked, class Visit>
+  void walk_border_cycle(halfedge_descriptor b, Walked& walked, const Visit& visit)
+  {
+    const auto& tm = input_.mesh();
+    for(halfedge_descriptor c : CGAL::halfedges_around_face(b, tm)) {
+      const std::uint64_t key = border_key(border_edge_of(opposite(c, tm)));
+      walked[key] = 1;
+      visit(key);
+    }
+  }
 
   Border_edge border_edge_of(halfedge_descriptor h)
   {

@@ -9,6 +9,7 @@
 // The repairs of the dual: parallel edges (rotated, glued around pinches, or joined
 // across) and pieces with faces that are not simple polygons (removed).
 
+#include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Vec3.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
@@ -285,19 +286,8 @@ std::size_t remove_pieces_with_non_simple_faces(Mesh& mesh, std::size_t& number_
     if(removed.count(seed))
       continue;
     ++pieces;
-    std::vector<face_descriptor> piece(1, seed), stack(1, seed);
-    removed.insert(seed);
-    while(!stack.empty()) {
-      const face_descriptor f = stack.back();
-      stack.pop_back();
-      for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
-        const auto o = opposite(h, mesh);
-        if(!is_border(o, mesh) && removed.insert(face(o, mesh)).second) {
-          piece.push_back(face(o, mesh));
-          stack.push_back(face(o, mesh));
-        }
-      }
-    }
+    std::vector<face_descriptor> piece;
+    walk_component(seed, mesh, removed, [&piece](face_descriptor f) { piece.push_back(f); });
     // the whole component goes: remove its elements without any reconnection
     std::set<typename boost::graph_traits<Mesh>::edge_descriptor> edges_of_piece;
     std::set<typename boost::graph_traits<Mesh>::vertex_descriptor> vertices_of_piece;

@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <set>
 #include <vector>
 
 namespace CGAL {
@@ -98,6 +99,33 @@ double star_extent(typename boost::graph_traits<PolygonMesh>::vertex_descriptor 
     largest = (std::max)({largest, std::abs(d[0]), std::abs(d[1]), std::abs(d[2])});
   }
   return largest;
+}
+
+/// Walks the connected component of `seed` (a face not in `reached`) across its
+/// edges, depth first: each face newly reached goes into `reached` and to `visit`, the
+/// seed first. `reached` is shared by the calls on one mesh, so that each component is
+/// walked once. The one component walk of the output meshes (the input's, on millions
+/// of faces, marks a vector by face index: `one_face_per_component()`).
+template <class PolygonMesh, class Visit>
+void walk_component(typename boost::graph_traits<PolygonMesh>::face_descriptor seed, const PolygonMesh& mesh,
+                    std::set<typename boost::graph_traits<PolygonMesh>::face_descriptor>& reached,
+                    const Visit& visit)
+{
+  using face_descriptor = typename boost::graph_traits<PolygonMesh>::face_descriptor;
+  reached.insert(seed);
+  visit(seed);
+  std::vector<face_descriptor> stack(1, seed);
+  while(!stack.empty()) {
+    const face_descriptor f = stack.back();
+    stack.pop_back();
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh)) {
+      const auto o = opposite(h, mesh);
+      if(!is_border(o, mesh) && reached.insert(face(o, mesh)).second) {
+        visit(face(o, mesh));
+        stack.push_back(face(o, mesh));
+      }
+    }
+  }
 }
 
 /// The unit normal of vertex v: the sum of its faces' area vectors (Newell's, so that

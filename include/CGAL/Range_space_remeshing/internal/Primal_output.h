@@ -225,6 +225,47 @@ void write_primal_connectivity(const Primal_complex& complex,
   stats.output_faces = number_of_faces;
 }
 
+/// The point at barycentric coordinates `w` in the triangle of `corner_points`: where
+/// the output vertex is placed (the crossing point, sampled on the input).
+template <class Point, class Weights>
+std::array<double, 3> barycentric_point(const std::array<Point, 3>& corner_points, const Weights& w)
+{
+  std::array<double, 3> p = {{0, 0, 0}};
+  for(int c = 0; c < 3; ++c) {
+    p[0] += w[c] * CGAL::to_double(corner_points[c].x());
+    p[1] += w[c] * CGAL::to_double(corner_points[c].y());
+    p[2] += w[c] * CGAL::to_double(corner_points[c].z());
+  }
+  return p;
+}
+
+/// The input's normals at `corners`: the caller's (`given`, from np_in) or those the
+/// remesher computes (`input_normals`).
+template <bool given, class Corners, class GivenNormals, class InputNormals>
+std::array<Vec3, 3> normals_at_corners(const Corners& corners, const GivenNormals& given_normals,
+                                       InputNormals& input_normals)
+{
+  std::array<Vec3, 3> normals;
+  for(int c = 0; c < 3; ++c) {
+    if constexpr(given)
+      normals[c] = to_vec3(get(given_normals, corners[c]));
+    else
+      normals[c] = input_normals(corners[c]);
+  }
+  return normals;
+}
+
+/// Writes an output vertex's unit normal (zero-area corners: the zero vector) and the
+/// normal of the crease's other side (the null vector off creases).
+template <class Out_vector, class NormalMap, class CreaseNormalMap, class OutVertex>
+void put_normals(NormalMap& normal_map, CreaseNormalMap& crease_normal_map, OutVertex ov,
+                 const Normals_at_point& normals)
+{
+  const Vec3 unit = normalized(normals.own);
+  put(normal_map, ov, Out_vector(unit[0], unit[1], unit[2]));
+  put(crease_normal_map, ov, Out_vector(normals.other[0], normals.other[1], normals.other[2]));
+}
+
 template <class TriangleMesh, class VPM, class VertexIndexMap, class Tracer, class PolygonMesh,
           class NamedParametersIn, class NamedParametersOut>
 void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex_index, Tracer& tracer,
@@ -282,34 +323,18 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
     const auto w = tracer.barycentric_coordinates(vertices[v]);
     const std::array<in_vertex, 3> corners = tracer.corners_of(vertices[v]);
     const std::array<In_point, 3> corner_points = {{get(vpm, corners[0]), get(vpm, corners[1]), get(vpm, corners[2])}};
-    std::array<double, 3> p = {{0, 0, 0}};
-    std::array<Vec3, 3> corner_normals;
-    int c = 0;
-    for(auto corner : corners) {
-      const auto& q = corner_points[c];
-      p[0] += w[c] * CGAL::to_double(q.x());
-      p[1] += w[c] * CGAL::to_double(q.y());
-      p[2] += w[c] * CGAL::to_double(q.z());
-      if constexpr(needs_corner_normals) {
-        if constexpr(has_input_normals)
-          corner_normals[c] = to_vec3(get(given_normals, corner));
-        else
-          corner_normals[c] = input_normals(corner);
-      }
-      if constexpr(!Attributes::empty)
-        attribute_sources[c] = {corner, w[c]};
-      ++c;
-    }
+    const std::array<double, 3> p = barycentric_point(corner_points, w);
     const out_vertex ov = add_vertex(out);
     put(out_vpm, ov, Out_point(p[0], p[1], p[2]));
-    if constexpr(needs_corner_normals) {
-      const Normals_at_point normals = normals_on_sides(corner_points, corner_normals, w);
-      const Vec3 unit = normalized(normals.own); // zero-area corners: the zero vector
-      put(normal_map, ov, Out_vector(unit[0], unit[1], unit[2]));
-      put(crease_normal_map, ov, Out_vector(normals.other[0], normals.other[1], normals.other[2]));
-    }
-    if constexpr(!Attributes::empty)
+    if constexpr(needs_corner_normals)
+      put_normals<Out_vector>(normal_map, crease_normal_map, ov,
+                  normals_on_sides(corner_points, normals_at_corners<has_input_normals>(corners, given_normals,
+                                                                                         input_normals), w));
+    if constexpr(!Attributes::empty) {
+      for(int c = 0; c < 3; ++c)
+        attribute_sources[c] = {corners[c], w[c]};
       attributes.put_mixed(ov, attribute_sources);
+    }
     vertex_of[v] = ov;
     ++number_of_vertices;
   }

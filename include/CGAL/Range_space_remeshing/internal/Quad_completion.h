@@ -99,17 +99,7 @@ private:
       if(reached.count(f) != 0)
         continue;
       ++stats.pieces_not_all_quads;
-      std::vector<face_descriptor> stack{f};
-      reached.insert(f);
-      while(!stack.empty()) {
-        const face_descriptor g = stack.back();
-        stack.pop_back();
-        for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(g, mesh_), mesh_)) {
-          const face_descriptor n = face(opposite(h, mesh_), mesh_);
-          if(n != GT::null_face() && reached.insert(n).second)
-            stack.push_back(n);
-        }
-      }
+      walk_component(f, mesh_, reached, [](face_descriptor) {});
     }
   }
 

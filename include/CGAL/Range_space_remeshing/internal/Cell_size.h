@@ -1,0 +1,133 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_CELL_SIZE_H
+#define CGAL_RANGE_SPACE_REMESHING_INTERNAL_CELL_SIZE_H
+
+// The cell size of a run: `grid_spacing`, or the default (a fraction of the diagonal
+// of the mapped input's bounding box), and the search of the cell size that gives
+// `number_of_target_vertices` (shared by `primal_remesh()` and `remesh()`).
+
+#include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/parameters.h>
+#include <CGAL/Range_space_remeshing/internal/Primal_parameters.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <string>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+namespace internal {
+
+/// `default_relative_cell_size` times the diagonal of the bounding box of f over the
+/// vertices on a face (an isolated vertex is never mapped by the remesh).
+template <class TriangleMesh, class RangeMap>
+double default_cell_size(const TriangleMesh& tm, const RangeMap& range_map)
+{
+  constexpr int D = range_dimension<RangeMap>();
+  std::array<double, D> low, high;
+  low.fill(std::numeric_limits<double>::infinity());
+  high.fill(-std::numeric_limits<double>::infinity());
+  for(auto v : vertices(tm)) {
+    if(halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
+      continue;
+    const auto& x = get(range_map, v);
+    for(int q = 0; q < D; ++q) {
+      if(!std::isfinite(double(x[q])))
+        throw Remeshing_error("the range map gives a NaN or infinite value");
+      low[q] = (std::min)(low[q], double(x[q]));
+      high[q] = (std::max)(high[q], double(x[q]));
+    }
+  }
+  // the diagonal, scaled by the longest side: the squares of huge or tiny sides would
+  // overflow or underflow
+  double longest = 0, sum = 0;
+  for(int q = 0; q < D; ++q)
+    longest = (std::max)(longest, high[q] - low[q]);
+  if(!(longest > 0) || !std::isfinite(longest))
+    throw Remeshing_error("the mapped input has no extent (a single point, or no face): give a grid_spacing",
+                          Remeshing_error::Kind::BAD_INPUT);
+  for(int q = 0; q < D; ++q)
+    sum += ((high[q] - low[q]) / longest) * ((high[q] - low[q]) / longest);
+  return default_relative_cell_size * longest * std::sqrt(sum);
+}
+
+// number_of_target_vertices: the counts accepted, and the runs tried at most
+constexpr double target_tolerance = 0.1;
+constexpr int maximum_target_runs = 12;
+
+/// Whether a run's vertex count is one that `search_cell_size()` accepts for `target`.
+inline bool is_near_target(std::size_t count, std::size_t target)
+{
+  const double n = double((std::max)(count, std::size_t(1)));
+  return std::abs(n - double(target)) <= target_tolerance * double(target);
+}
+
+/// Searches a cell size, from `h`, whose run gives `target` output vertices within
+/// `target_tolerance`: the count goes roughly as h^-2, refined by secant steps in
+/// log-log scale. `run(h)` does a run and returns its vertex count; the last run is the
+/// one found. A cell size refused as too small is doubled. `keeps_topology`: the runs
+/// refine the cell size until the topology is kept (said if the count stays above).
+template <class Run>
+double search_cell_size(double h, std::size_t target, const Run& run, bool keeps_topology)
+{
+  double previous_h = 0, previous_log_n = 0, n = 0;
+  const double log_target = std::log(double(target));
+  for(int attempt = 0; attempt < maximum_target_runs; ++attempt) {
+    try {
+      n = double((std::max)(run(h), std::size_t(1)));
+    } catch(const Remeshing_error& error) {
+      if(error.kind() != Remeshing_error::Kind::OUTPUT_TOO_LARGE)
+        throw;
+      previous_h = 0;
+      h *= 2;
+      continue;
+    }
+    if(is_near_target(std::size_t(n), target))
+      return h;
+    double slope = -2; // d log n / d log h
+    if(previous_h > 0) {
+      const double s = (std::log(n) - previous_log_n) / (std::log(h) - std::log(previous_h));
+      if(std::isfinite(s) && s < -0.5 && s > -4)
+        slope = s;
+    }
+    previous_h = h;
+    previous_log_n = std::log(n);
+    h = std::exp(std::log(h) + (log_target - std::log(n)) / slope);
+  }
+  const bool kept_finer = keeps_topology && n > double(target);
+  throw Remeshing_error("no cell size tried gives " + std::to_string(target) + " output vertices within " +
+                            std::to_string(int(100 * target_tolerance)) + "% (the last gave " +
+                            std::to_string(std::size_t(n)) + ")" +
+                            (kept_finer ? "; keeping the input's topology (preserve_topology) needs smaller "
+                                          "cells than that count: ask for more vertices, or allow the topology "
+                                          "to change"
+                                        : ""),
+                        Remeshing_error::Kind::TARGET_NOT_REACHED);
+}
+
+/// The cell size of `np`: `grid_spacing`, or the default relative to the mapped input.
+template <class TriangleMesh, class NamedParameters>
+double cell_size_of(const TriangleMesh& tm, const NamedParameters& np)
+{
+  using CGAL::parameters::get_parameter;
+  if constexpr(CGAL::parameters::is_default_parameter<NamedParameters, CGAL::internal_np::grid_spacing_t>::value)
+    return default_cell_size(tm, range_map_of(tm, np));
+  else
+    return double(get_parameter(np, CGAL::internal_np::grid_spacing));
+}
+
+} // namespace internal
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_INTERNAL_CELL_SIZE_H

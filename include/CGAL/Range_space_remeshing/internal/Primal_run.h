@@ -1,0 +1,300 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_PRIMAL_RUN_H
+#define CGAL_RANGE_SPACE_REMESHING_INTERNAL_PRIMAL_RUN_H
+
+// One run of the primal remesh at a given cell size, in the order of the paper: the
+// complete scan or the seeded traversal and the tracing of the arcs (section 4), the
+// faces of the complex (section 5), the topology check (section 8; for
+// `preserve_topology`, the cell size is refined until it passes), then the output.
+
+#include <CGAL/Range_space_remeshing/Range_space_traits.h>
+#include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/Statistics.h>
+#include <CGAL/Range_space_remeshing/Topology_defect.h>
+#include <CGAL/Range_space_remeshing/parameters.h>
+#include <CGAL/Range_space_remeshing/internal/Grid_tracer.h>
+#include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
+#include <CGAL/Range_space_remeshing/internal/Primal_output.h>
+#include <CGAL/Range_space_remeshing/internal/Primal_parameters.h>
+#include <CGAL/Range_space_remeshing/internal/Progress.h>
+#include <CGAL/Range_space_remeshing/internal/Topology_check.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/tags.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+namespace internal {
+
+/// The milliseconds since `start`, which moves to now: each stage is timed in turn.
+inline double milliseconds_since(std::chrono::steady_clock::time_point& start)
+{
+  const auto now = std::chrono::steady_clock::now();
+  const double ms = std::chrono::duration<double, std::milli>(now - start).count();
+  start = now;
+  return ms;
+}
+
+/// One seed face per connected component of the input (connectivity only: the map
+/// is not evaluated here).
+template <class TriangleMesh, class FaceIndexMap>
+std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor>
+one_face_per_component(const TriangleMesh& tm, FaceIndexMap face_index)
+{
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  std::vector<face_descriptor> seeds, stack;
+  std::vector<std::uint8_t> seen(num_faces(tm), 0);
+  for(face_descriptor f : faces(tm)) {
+    if(seen[get(face_index, f)])
+      continue;
+    seeds.push_back(f);
+    seen[get(face_index, f)] = 1;
+    stack.push_back(f);
+    while(!stack.empty()) {
+      const face_descriptor g = stack.back();
+      stack.pop_back();
+      // three steps, not a circulation: on a broken structure a circulation may not end
+      const auto h0 = halfedge(g, tm), h1 = next(h0, tm), h2 = next(h1, tm);
+      if(next(h2, tm) != h0)
+        throw Remeshing_error("the input has a face that is not a triangle, or a broken halfedge structure (face " +
+                              std::to_string(get(face_index, g)) + ")");
+      for(auto h : {h0, h1, h2}) {
+        const auto o = opposite(h, tm);
+        if(is_border(o, tm))
+          continue;
+        const face_descriptor n = face(o, tm);
+        if(!seen[get(face_index, n)]) {
+          seen[get(face_index, n)] = 1;
+          stack.push_back(n);
+        }
+      }
+    }
+  }
+  return seeds;
+}
+
+struct No_inspection
+{
+  template <class Tracer, class Complex>
+  void operator()(Tracer&, const Complex&) const {}
+};
+
+struct No_topology_visitor
+{
+  template <class Defect>
+  void operator()(const Defect&) const {}
+};
+
+// preserve_topology: the cell size shrinks by this factor until the check passes,
+// at most this many times (a factor of 2^-20 in all)
+constexpr double topology_refinement_factor = 0.70710678118654752;
+constexpr std::size_t maximum_topology_refinements = 40;
+
+/// Scans (or seeds) and traces with `tracer`, and builds the faces: the run up to
+/// the output, with its statistics. `count_pieces` prepares the closed-loop check.
+template <class TriangleMesh, class Tracer, class NamedParametersIn, bool parallel>
+std::unique_ptr<Primal_complex> trace_primal_complex(const TriangleMesh& tm, Tracer& tracer,
+                                                     const NamedParametersIn& np_in, bool seeded,
+                                                     bool count_pieces, std::integral_constant<bool, parallel>,
+                                                     Statistics& stats,
+                                                     std::chrono::steady_clock::time_point& start)
+{
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  stats.input_vertices = num_vertices(tm);
+  stats.input_faces = num_faces(tm);
+  if(!seeded) {
+    if(count_pieces)
+      tracer.count_untraced_pieces();
+#if defined(CGAL_LINKED_WITH_TBB)
+    if constexpr(parallel) {
+      tracer.map_and_record_in_parallel();
+      tracer.refuse_too_large_output();
+      tracer.scan_in_parallel();
+    } else
+#endif
+    {
+      tracer.map_all_vertices();
+      tracer.scan_all_faces(); // refuses too large outputs; checks every face is a triangle
+    }
+    stats.seeds = tracer.intersection_vertices().size();
+    if(tracer.has_seen_border())
+      stats.uncrossed_border_cycles = tracer.number_of_uncrossed_border_cycles();
+  } else {
+    // not choose_parameter(): its default argument, a pass over the whole mesh, would be
+    // evaluated even when the user gives the seeds
+    if constexpr(is_default_parameter<NamedParametersIn, internal_np::seed_faces_t>::value) {
+      for(auto f : one_face_per_component(tm, tracer.face_index_map()))
+        stats.seeds += tracer.seed_from(f) ? 1 : 0;
+    } else {
+      for(auto f : get_parameter(np_in, internal_np::seed_faces))
+        stats.seeds += tracer.seed_from(f) ? 1 : 0;
+    }
+    stats.uncrossed_border_cycles = tracer.number_of_border_cycles_of_empty_components();
+  }
+  stats.time_seeding_ms = milliseconds_since(start);
+
+  tracer.trace(/*create vertices at arc ends*/ seeded);
+  stats.time_tracing_ms = milliseconds_since(start);
+
+  const auto& vertices = tracer.intersection_vertices();
+  std::vector<std::uint32_t> links(4 * vertices.size());
+  std::vector<bool> positive(vertices.size()), boundary(vertices.size());
+  for(std::size_t v = 0; v < vertices.size(); ++v) {
+    std::copy(vertices[v].link.begin(), vertices[v].link.end(), links.begin() + 4 * v);
+    positive[v] = vertices[v].orientation > 0;
+    boundary[v] = vertices[v].is_boundary();
+  }
+  auto complex = std::make_unique<Primal_complex>(std::move(links), positive, boundary);
+  stats.time_faces_ms = milliseconds_since(start);
+
+  stats.mapped_vertices = tracer.number_of_mapped_vertices();
+  stats.visited_faces = tracer.number_of_visited_faces();
+  stats.tracing_steps = tracer.number_of_tracing_steps();
+  stats.intersection_vertices = vertices.size();
+  stats.digons = complex->number_of_digons();
+  stats.boundary_digons = complex->number_of_boundary_digons();
+  stats.boundary_corners = tracer.number_of_corners();
+  stats.non_simple_faces = complex->number_of_non_simple_faces();
+  stats.dropped_pieces = complex->number_of_dropped_pieces();
+  return complex;
+}
+
+// The error of a refined run (past the first), for which the refinement could not
+// finish; an error of the first run, or a cancel, is rethrown as it is.
+inline Remeshing_error refinement_failure(const Remeshing_error& error, std::size_t refinements, double h)
+{
+  return Remeshing_error("preserve_topology could not reach a cell size without topology defects (" +
+                             std::to_string(refinements) + " refinements, to cell size " + std::to_string(h) +
+                             "): " + error.what(),
+                         Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
+}
+
+/// Whether `ConcurrencyTag` asks for the parallel scan (refused without TBB).
+template <class ConcurrencyTag>
+constexpr bool runs_in_parallel()
+{
+#if !defined(CGAL_LINKED_WITH_TBB)
+  static_assert(!std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value,
+                "Parallel_tag is enabled but TBB is unavailable.");
+  return false;
+#else
+  return std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+#endif
+}
+
+/// The topology check of a complete scan, timed: the defects it finds (none checked
+/// in the seeded mode, which does not see every piece of the output).
+template <class face_descriptor, class Tracer>
+std::vector<Topology_defect<face_descriptor>> check_topology_of(Tracer& tracer, const Primal_complex& complex,
+                                                                const Primal_run_options& options, Statistics& stats,
+                                                                const Progress& progress,
+                                                                std::chrono::steady_clock::time_point& start)
+{
+  std::vector<Topology_defect<face_descriptor>> defects;
+  if(options.check && !options.seeded) {
+    defects = Topology_check<Tracer, face_descriptor>(tracer, complex).run(stats, progress);
+    stats.time_topology_ms = milliseconds_since(start);
+  }
+  return defects;
+}
+
+// The whole run at cell size `cell_size`, on a mesh with faces (the callers check);
+// `inspect(tracer, complex)` sees the intermediate structures before the output is
+// written (tests check the invariants there).
+template <class TriangleMesh, class PolygonMesh, class NamedParametersIn, class NamedParametersOut,
+          class Inspector, class ConcurrencyTag>
+Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMesh& out,
+                            const NamedParametersIn& np_in, const NamedParametersOut& np_out,
+                            const Inspector& inspect, const Progress& progress, ConcurrencyTag)
+{
+  constexpr bool parallel = runs_in_parallel<ConcurrencyTag>();
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+
+  auto start = std::chrono::steady_clock::now();
+  const auto start_total = start;
+
+  using VPM = typename GetVertexPointMap<TriangleMesh, NamedParametersIn>::const_type;
+  const VPM vpm = choose_parameter(get_parameter(np_in, CGAL::internal_np::vertex_point),
+                                   get_const_property_map(CGAL::vertex_point, tm));
+  using Range_map = typename Range_map_of<TriangleMesh, NamedParametersIn>::type;
+  const Range_map range_map = range_map_of(tm, np_in);
+  using Traits = typename Primal_traits_of<TriangleMesh, NamedParametersIn>::type;
+  const Traits traits = choose_parameter<Traits>(get_parameter(np_in, CGAL::internal_np::geom_traits));
+  using Point_d = typename Traits::Point_d;
+
+  const Point_d origin = choose_parameter(get_parameter(np_in, internal_np::grid_origin), Point_d{});
+  check_grid(cell_size, origin);
+  const Primal_run_options options = primal_run_options(np_in);
+  const auto visitor =
+      choose_parameter(get_parameter(np_in, internal_np::topology_visitor), No_topology_visitor());
+
+  auto face_index = CGAL::get_initialized_face_index_map(tm, np_in);
+  auto vertex_index = CGAL::get_initialized_vertex_index_map(tm, np_in);
+  using Tracer = Grid_tracer<TriangleMesh, Range_map, decltype(face_index),
+                                       decltype(vertex_index), Traits>;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+
+  double h = cell_size;
+  for(std::size_t refinements = 0;; ++refinements) {
+    start = std::chrono::steady_clock::now();
+    try {
+      Tracer tracer(tm, range_map, face_index, vertex_index, origin, h, options.maximum_vertices, traits);
+      tracer.set_progress(progress);
+      Statistics stats;
+      stats.cell_size = h;
+      stats.topology_refinements = refinements;
+      const std::unique_ptr<Primal_complex> complex =
+          trace_primal_complex(tm, tracer, np_in, options.seeded, options.check, std::integral_constant<bool, parallel>(),
+                               stats, start);
+
+      const std::vector<Topology_defect<face_descriptor>> defects =
+          check_topology_of<face_descriptor>(tracer, *complex, options, stats, progress, start);
+      if(options.preserve && !stats.topology_preserved()) {
+        if(refinements == maximum_topology_refinements)
+          throw Remeshing_error("defects remain at every cell size tried",
+                                Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
+        h *= topology_refinement_factor;
+        continue;
+      }
+      for(const auto& defect : defects)
+        visitor(defect);
+      inspect(tracer, *complex);
+
+      progress.report(Remeshing_stage::PRIMAL_OUTPUT, 0);
+      write_primal_complex(tm, vpm, vertex_index, tracer, *complex, out, np_in, np_out, stats);
+      progress.report(Remeshing_stage::PRIMAL_OUTPUT, 1);
+      stats.time_output_ms = milliseconds_since(start);
+      stats.time_total_ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_total).count();
+      return stats;
+    } catch(const Remeshing_error& error) {
+      if(refinements == 0 || error.kind() == Remeshing_error::Kind::CANCELLED)
+        throw; // as it is: a Remeshing_cancelled stays one
+      throw refinement_failure(error, refinements, h);
+    }
+  }
+}
+
+} // namespace internal
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_INTERNAL_PRIMAL_RUN_H
