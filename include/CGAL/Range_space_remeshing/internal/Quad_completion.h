@@ -6,7 +6,7 @@
 #ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUAD_COMPLETION_H
 #define CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUAD_COMPLETION_H
 
-// All quads (issue 39): the faces of the dual that are not quads (where parallel
+// All quads: the faces of the dual that are not quads (where parallel
 // edges were joined, pinches glued, pieces dropped) are turned into quads with
 // local operations that keep the vertices, the Euler characteristic and the
 // components. A face of more than four sides is cut by diagonals into quads and, if

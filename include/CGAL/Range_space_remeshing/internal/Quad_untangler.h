@@ -6,7 +6,7 @@
 #ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUAD_UNTANGLER_H
 #define CGAL_RANGE_SPACE_REMESHING_INTERNAL_QUAD_UNTANGLER_H
 
-// The untangling after the relaxation (issue 39): the relaxation refuses moves that
+// The untangling after the relaxation: the relaxation refuses moves that
 // fold a face or make it non-convex, but the faces that came so from the dual and the
 // collapse stay as they are. Here only the vertices of those faces move (and, where
 // that is not enough, the vertices around them), one at a time, each to the best of a

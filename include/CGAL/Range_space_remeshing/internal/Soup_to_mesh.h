@@ -3,7 +3,8 @@
 //
 // Author(s) : Range_space_remeshing team
 //
-// A polygon mesh from a soup that is an oriented 2-manifold, in O(n log n).
+// A polygon mesh from a soup that is an oriented 2-manifold, in linear time (but for
+// the edges of a point of very high valence, sorted by comparison).
 //
 // Not CGAL's `polygon_soup_to_polygon_mesh()`: it adds one face at a time with
 // `Euler::add_face()`, which looks each new edge up around its vertex, so a vertex of
