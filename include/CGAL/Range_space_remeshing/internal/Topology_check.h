@@ -128,6 +128,11 @@ private:
     return d;
   }
 
+  bool same_ceiling(std::uint32_t v, std::uint32_t w) const
+  {
+    return same_levels(input_.ceiling_of(v), input_.ceiling_of(w));
+  }
+
   Levels cell_of_vertex(std::uint32_t v) const
   {
     Levels c = input_.ceiling_of(v);
@@ -242,7 +247,7 @@ private:
         do {
           walked[3 * g + edge] = 1;
           faces.push_back(g);
-          one_cell = one_cell && input_.ceiling_of(input_.corners_of(g)[edge]) == ceiling;
+          one_cell = one_cell && same_levels(input_.ceiling_of(input_.corners_of(g)[edge]), ceiling);
           next_border_edge(g, edge);
         } while(g != f || edge != e);
         if(one_cell)
@@ -282,9 +287,13 @@ private:
   template <class T>
   static void add_once(std::vector<T>& list, const T& x, std::size_t from = 0)
   {
-    if(list.size() - from > searched_cells || std::find(list.begin() + from, list.end(), x) == list.end())
+    if(list.size() - from > searched_cells ||
+       std::find_if(list.begin() + from, list.end(), [&](const T& y) { return same(y, x); }) == list.end())
       list.push_back(x);
   }
+
+  static bool same(std::uint32_t a, std::uint32_t b) { return a == b; }
+  static bool same(const Levels& a, const Levels& b) { return same_levels(a, b); }
 
   template <class T>
   static void add_each_once(const T* begin, const T* end, std::vector<T>& list, std::size_t from)
@@ -445,7 +454,7 @@ private:
           continue;
         for(int other = 1; other < 3 && vertex_cell_[v] == none; ++other) {
           const std::uint32_t w = corners[(k + other) % 3];
-          if(vertex_cell_[w] != none && input_.ceiling_of(w) == input_.ceiling_of(v))
+          if(vertex_cell_[w] != none && same_ceiling(w, v))
             vertex_cell_[v] = vertex_cell_[w];
         }
         if(vertex_cell_[v] == none)
@@ -472,14 +481,14 @@ private:
         if(is_lost(f) || !owns_edge(f, e))
           continue;
         const std::uint32_t a = input_.corners_of(f)[e], b = input_.corners_of(f)[(e + 1) % 3];
-        if(input_.ceiling_of(a) == input_.ceiling_of(b))
+        if(same_ceiling(a, b))
           continue; // no crossing
         cells.clear();
         add_crossing_cells(a, b, cells);
         remove_repeats(cells);
         const Levels cell_a = cell_of_vertex(a), cell_b = cell_of_vertex(b);
         for(const Levels& c : cells) // the ends' cells are listed with the ends
-          if(c != cell_a && c != cell_b)
+          if(!same_levels(c, cell_a) && !same_levels(c, cell_b))
             crossing_cells_.push_back(cell_index_.id_of(c));
       }
     crossing_start_.back() = std::uint32_t(crossing_cells_.size());
@@ -509,8 +518,8 @@ private:
   bool is_in_one_cell(std::uint32_t f) const
   {
     const auto& corners = input_.corners_of(f);
-    return vertex_start_[f] == vertex_start_[f + 1] && input_.ceiling_of(corners[0]) == input_.ceiling_of(corners[1]) &&
-           input_.ceiling_of(corners[0]) == input_.ceiling_of(corners[2]);
+    return vertex_start_[f] == vertex_start_[f + 1] && same_ceiling(corners[0], corners[1]) &&
+           same_ceiling(corners[0], corners[2]);
   }
 
   /// The cells a face meets: its corners', its edges' crossings', and the four
@@ -532,6 +541,8 @@ private:
       for(std::uint32_t v : corners)
         add_once(face_cells_, vertex_cell_[v], from);
       for(int e = 0; e < 3; ++e) {
+        if(same_ceiling(corners[e], corners[(e + 1) % 3]))
+          continue; // no crossing: no need to find the twin that lists them
         const std::size_t slot = crossing_slot(f, e);
         add_each_once(crossings_begin(slot), crossings_end(slot), face_cells_, from);
       }
