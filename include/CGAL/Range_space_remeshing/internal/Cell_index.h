@@ -10,7 +10,7 @@
 // hashed once, and what is counted per cell then lives in arrays indexed by id.
 
 #include <cstdint>
-#include <unordered_map>
+#include <cstddef>
 #include <vector>
 
 namespace CGAL {
@@ -29,24 +29,74 @@ struct Levels_hash
   }
 };
 
+/// Whether two cells are the same, by an inlined loop: std::array's == became a
+/// call to memcmp, which the topology check made on every edge of the input.
+template <class Levels>
+inline bool same_levels(const Levels& a, const Levels& b)
+{
+  for(std::size_t i = 0; i < a.size(); ++i)
+    if(a[i] != b[i])
+      return false;
+  return true;
+}
+
 template <class Levels>
 class Cell_index
 {
 public:
-  /// The id of cell c, a new one the first time c is seen.
+  /// The id of cell c, a new one the first time c is seen. Ids follow the order of
+  /// first sight, whatever the table's layout: the callers' results do not depend on it.
   std::uint32_t id_of(const Levels& c)
   {
-    const auto inserted = ids_.emplace(c, std::uint32_t(cells_.size()));
-    if(inserted.second)
-      cells_.push_back(c);
-    return inserted.first->second;
+    if(2 * (cells_.size() + 1) > slots_.size())
+      grow();
+    const std::size_t h = Levels_hash<Levels>()(c);
+    for(std::size_t s = slot_of(h);; s = (s + 1) & mask_) {
+      Slot& slot = slots_[s];
+      if(slot.id == empty) {
+        slot = Slot{std::uint32_t(cells_.size()), std::uint32_t(h)};
+        cells_.push_back(c);
+        return slot.id;
+      }
+      if(slot.tag == std::uint32_t(h) && same_levels(cells_[slot.id], c))
+        return slot.id;
+    }
   }
 
   const Levels& cell(std::uint32_t id) const { return cells_[id]; }
   std::size_t size() const { return cells_.size(); }
 
 private:
-  std::unordered_map<Levels, std::uint32_t, Levels_hash<Levels>> ids_;
+  // Open addressing over ids into cells_: no node per cell, and the low bits of the
+  // hash kept as a tag, so that a probe rarely compares levels.
+  struct Slot
+  {
+    std::uint32_t id, tag;
+  };
+  static constexpr std::uint32_t empty = std::uint32_t(-1);
+
+  std::size_t slot_of(std::size_t h) const { return std::size_t((std::uint64_t(h) * 0x9E3779B97F4A7C15ull) >> shift_); }
+
+  void grow()
+  {
+    const std::size_t size = slots_.empty() ? 64 : 2 * slots_.size();
+    mask_ = size - 1;
+    shift_ = 64;
+    for(std::size_t s = size; s > 1; s /= 2)
+      --shift_;
+    slots_.assign(size, Slot{empty, 0});
+    for(std::uint32_t id = 0; id < cells_.size(); ++id) {
+      const std::size_t h = Levels_hash<Levels>()(cells_[id]);
+      std::size_t s = slot_of(h);
+      while(slots_[s].id != empty)
+        s = (s + 1) & mask_;
+      slots_[s] = Slot{id, std::uint32_t(h)};
+    }
+  }
+
+  std::vector<Slot> slots_;
+  std::size_t mask_ = 0;
+  int shift_ = 64;
   std::vector<Levels> cells_;
 };
 

@@ -55,7 +55,9 @@ class Topology_check
   using Levels = typename Tracer::Levels;
   using Defect = Topology_defect<FaceDescriptor>;
   static constexpr std::uint32_t none = std::uint32_t(-1);
+  static constexpr std::size_t unlimited = std::size_t(-1);
   using Cell_map = std::unordered_map<Levels, long, Levels_hash<Levels>>;
+  using Seeds = std::unordered_map<Levels, std::vector<std::uint32_t>, Levels_hash<Levels>>;
   struct Loop
   {
     int axis;
@@ -103,14 +105,20 @@ public:
         loop.harmless = false;
     }
     if(!defects_.empty() || !loops_.empty() || !chi_matches) {
-      Cell_map excess = count_per_cell();
+      // Without lost pieces, counting the suspect cells is enough if they make up
+      // the whole difference; else every cell is counted.
+      Cell_map excess;
+      const bool suspects_only = defects_.empty() &&
+          count_in_suspect_cells(chi_of_kept_components - complex_.traced_euler_characteristic(), excess);
+      if(!suspects_only)
+        excess = count_per_cell();
       stats.harmless_loops = absorb_caps(excess);
       for(const Loop& loop : loops_)
         if(!loop.harmless) {
           add_defect(Topology_defect_kind::CLOSED_LOOP, loop.cell, loop.faces).axis = loop.axis;
           ++stats.closed_loops;
         }
-      stats.non_disk_cells = locate_non_disk_cells(excess);
+      stats.non_disk_cells = suspects_only ? locate_non_disk_suspect_cells(excess) : locate_non_disk_cells(excess);
     }
     return std::move(defects_);
   }
@@ -126,6 +134,11 @@ private:
     for(std::uint32_t f : face_ids)
       d.input_faces.push_back(input_.face_of_id(f));
     return d;
+  }
+
+  bool same_ceiling(std::uint32_t v, std::uint32_t w) const
+  {
+    return same_levels(input_.ceiling_of(v), input_.ceiling_of(w));
   }
 
   Levels cell_of_vertex(std::uint32_t v) const
@@ -242,7 +255,7 @@ private:
         do {
           walked[3 * g + edge] = 1;
           faces.push_back(g);
-          one_cell = one_cell && input_.ceiling_of(input_.corners_of(g)[edge]) == ceiling;
+          one_cell = one_cell && same_levels(input_.ceiling_of(input_.corners_of(g)[edge]), ceiling);
           next_border_edge(g, edge);
         } while(g != f || edge != e);
         if(one_cell)
@@ -282,9 +295,13 @@ private:
   template <class T>
   static void add_once(std::vector<T>& list, const T& x, std::size_t from = 0)
   {
-    if(list.size() - from > searched_cells || std::find(list.begin() + from, list.end(), x) == list.end())
+    if(list.size() - from > searched_cells ||
+       std::find_if(list.begin() + from, list.end(), [&](const T& y) { return same(y, x); }) == list.end())
       list.push_back(x);
   }
+
+  static bool same(std::uint32_t a, std::uint32_t b) { return a == b; }
+  static bool same(const Levels& a, const Levels& b) { return same_levels(a, b); }
 
   template <class T>
   static void add_each_once(const T* begin, const T* end, std::vector<T>& list, std::size_t from)
@@ -316,27 +333,47 @@ private:
       }
   }
 
-  /// The cells the closed edge from vertex a to vertex b meets, each once.
-  void cells_of_edge(std::uint32_t a, std::uint32_t b, std::vector<Levels>& cells) const
+  /// Whether vertex v lies in cell c.
+  bool vertex_in(std::uint32_t v, const Levels& c) const
   {
-    cells.clear();
-    add_once(cells, cell_of_vertex(a));
-    add_once(cells, cell_of_vertex(b));
-    add_crossing_cells(a, b, cells);
-    remove_repeats(cells);
+    const Levels& ceiling = input_.ceiling_of(v);
+    for(int P = 0; P < D; ++P)
+      if(ceiling[P] != c[P] + 1) // a coordinate on a level counts as below it
+        return false;
+    return true;
   }
 
-  /// The cells the face meets, each once.
-  void cells_of_face(std::uint32_t f, std::vector<Levels>& cells) const
+  /// Whether the closed edge from vertex a to vertex b meets cell c: at an end, or
+  /// where it crosses one of the two hyperplanes bounding c in some axis (the cells
+  /// of its other crossings differ from c in that axis).
+  bool edge_meets(std::uint32_t a, std::uint32_t b, const Levels& c) const
   {
-    cells.clear();
+    if(vertex_in(a, c) || vertex_in(b, c))
+      return true;
+    const Levels &ca = input_.ceiling_of(a), &cb = input_.ceiling_of(b);
+    for(int P = 0; P < D; ++P)
+      for(std::int32_t level = c[P]; level <= c[P] + 1; ++level) {
+        if(level < (std::min)(ca[P], cb[P]) || level >= (std::max)(ca[P], cb[P]))
+          continue;
+        Levels x = closed_loops_.cell_of_edge_crossing(a, b, P, level);
+        x[P] = c[P]; // the cell above the crossing, or below it
+        if(same_levels(x, c))
+          return true;
+      }
+    return false;
+  }
+
+  /// Whether face f meets cell c: along an edge, or around one of its intersection
+  /// vertices.
+  bool face_meets(std::uint32_t f, const Levels& c) const
+  {
     const auto& corners = input_.corners_of(f);
     for(int e = 0; e < 3; ++e)
-      add_once(cells, cell_of_vertex(corners[e]));
-    for(int e = 0; e < 3; ++e)
-      add_crossing_cells(corners[e], corners[(e + 1) % 3], cells);
-    for_each_cell_around_vertices_of(f, [&](const Levels& c) { add_once(cells, c); });
-    remove_repeats(cells);
+      if(edge_meets(corners[e], corners[(e + 1) % 3], c))
+        return true;
+    bool around_vertex = false;
+    for_each_cell_around_vertices_of(f, [&](const Levels& x) { around_vertex = around_vertex || same_levels(x, c); });
+    return around_vertex;
   }
 
   /// Calls `add(cell)` for the four cells around each intersection vertex of face f.
@@ -445,7 +482,7 @@ private:
           continue;
         for(int other = 1; other < 3 && vertex_cell_[v] == none; ++other) {
           const std::uint32_t w = corners[(k + other) % 3];
-          if(vertex_cell_[w] != none && input_.ceiling_of(w) == input_.ceiling_of(v))
+          if(vertex_cell_[w] != none && same_ceiling(w, v))
             vertex_cell_[v] = vertex_cell_[w];
         }
         if(vertex_cell_[v] == none)
@@ -472,14 +509,14 @@ private:
         if(is_lost(f) || !owns_edge(f, e))
           continue;
         const std::uint32_t a = input_.corners_of(f)[e], b = input_.corners_of(f)[(e + 1) % 3];
-        if(input_.ceiling_of(a) == input_.ceiling_of(b))
+        if(same_ceiling(a, b))
           continue; // no crossing
         cells.clear();
         add_crossing_cells(a, b, cells);
         remove_repeats(cells);
         const Levels cell_a = cell_of_vertex(a), cell_b = cell_of_vertex(b);
         for(const Levels& c : cells) // the ends' cells are listed with the ends
-          if(c != cell_a && c != cell_b)
+          if(!same_levels(c, cell_a) && !same_levels(c, cell_b))
             crossing_cells_.push_back(cell_index_.id_of(c));
       }
     crossing_start_.back() = std::uint32_t(crossing_cells_.size());
@@ -509,8 +546,8 @@ private:
   bool is_in_one_cell(std::uint32_t f) const
   {
     const auto& corners = input_.corners_of(f);
-    return vertex_start_[f] == vertex_start_[f + 1] && input_.ceiling_of(corners[0]) == input_.ceiling_of(corners[1]) &&
-           input_.ceiling_of(corners[0]) == input_.ceiling_of(corners[2]);
+    return vertex_start_[f] == vertex_start_[f + 1] && same_ceiling(corners[0], corners[1]) &&
+           same_ceiling(corners[0], corners[2]);
   }
 
   /// The cells a face meets: its corners', its edges' crossings', and the four
@@ -532,6 +569,8 @@ private:
       for(std::uint32_t v : corners)
         add_once(face_cells_, vertex_cell_[v], from);
       for(int e = 0; e < 3; ++e) {
+        if(same_ceiling(corners[e], corners[(e + 1) % 3]))
+          continue; // no crossing: no need to find the twin that lists them
         const std::size_t slot = crossing_slot(f, e);
         add_each_once(crossings_begin(slot), crossings_end(slot), face_cells_, from);
       }
@@ -593,20 +632,79 @@ private:
     return nonzero;
   }
 
-  /// The excesses of the two cells of every loop, from the input faces meeting them
-  /// only: those reached from the loops' faces and the traced faces' vertices in
-  /// them, across edges meeting the cell (a region is connected through them).
-  Cell_map count_in_cells_of_loops()
+  /// The loops' faces, as seeds of both their cells.
+  Seeds seeds_of_loops() const
   {
-    index_vertices_by_face();
-    std::unordered_map<Levels, std::vector<std::uint32_t>, Levels_hash<Levels>> seeds;
+    Seeds seeds;
     for(const Loop& loop : loops_) {
       auto& above = seeds[loop.cell];
       auto& below = seeds[cell_below(loop)];
       above.insert(above.end(), loop.faces.begin(), loop.faces.end());
       below.insert(below.end(), loop.faces.begin(), loop.faces.end());
     }
+    return seeds;
+  }
+
+  /// The excesses of the two cells of every loop, counted in those cells only.
+  Cell_map count_in_cells_of_loops()
+  {
+    Seeds seeds = seeds_of_loops();
     Cell_map excess;
+    count_in_cells(seeds, unlimited, excess, nullptr);
+    return excess;
+  }
+
+  /// The cells where a region may have excess above zero (those of loops) or may be
+  /// bounded by several traced cycles (those of two traced faces or more): with no
+  /// lost piece, every other cell holds regions bounded by one traced cycle each,
+  /// of excess 0 (a disk) or below (a handle inside the cell).
+  Seeds seeds_of_suspect_cells(std::size_t& traced_in_suspects) const
+  {
+    Seeds seeds = seeds_of_loops();
+    Cell_index<Levels> traced_cells;
+    std::vector<std::uint32_t> traced_faces;
+    for(const auto& corner : complex_.traced_face_corners()) {
+      const Levels c = cell_of_traced_face(corner);
+      const std::uint32_t id = traced_cells.id_of(c);
+      if(id == traced_faces.size())
+        traced_faces.push_back(0);
+      if(++traced_faces[id] == 2)
+        seeds[c];
+    }
+    traced_in_suspects = 0;
+    for(std::uint32_t n : traced_faces)
+      traced_in_suspects += n >= 2 ? n : 0;
+    return seeds;
+  }
+
+  /// The excesses of the suspect cells, in `excess`, and the faces meeting each, in
+  /// `faces_in_suspect_cells_`; whether they add up to the total over all cells,
+  /// chi(M) - chi(traced). Then the other cells, of excess 0 or below, are all 0.
+  /// False too, without counting, when the suspect cells hold more than a third of
+  /// the traced faces, or after visiting as many faces as the input has: a face
+  /// meets many cells of a fine grid, and counting cell by cell would then cost
+  /// more than the count of all cells, which takes each face once.
+  bool count_in_suspect_cells(long total, Cell_map& excess)
+  {
+    std::size_t traced_in_suspects = 0;
+    Seeds seeds = seeds_of_suspect_cells(traced_in_suspects);
+    if(3 * traced_in_suspects > complex_.traced_face_corners().size() ||
+       !count_in_cells(seeds, number_of_faces_, excess, &faces_in_suspect_cells_))
+      return false;
+    long sum = 0;
+    for(const auto& entry : excess)
+      sum += entry.second;
+    return sum == total;
+  }
+
+  /// The excesses of the seeded cells, from the input faces meeting them only: those
+  /// reached from the seeds and the traced faces' vertices in them, across edges
+  /// meeting the cell (a region is connected through them). Each region must hold a
+  /// seed or bound a traced face of the cell. Lists the faces meeting each cell in
+  /// `faces_meeting` if given. False if it stopped after visiting `budget` faces.
+  bool count_in_cells(Seeds& seeds, std::size_t budget, Cell_map& excess, Seeds* faces_meeting)
+  {
+    index_vertices_by_face();
     const auto& vertices = tracer_.intersection_vertices();
     for(const auto& corner : complex_.traced_face_corners()) {
       const auto found = seeds.find(cell_of_traced_face(corner));
@@ -615,57 +713,79 @@ private:
         --excess[found->first];
       }
     }
-    std::vector<std::uint8_t> in_region(number_of_faces_, 0);
-    std::vector<std::uint8_t> vertex_counted(input_.number_of_input_vertices(), 0);
-    std::vector<Levels> cells;
+    Flood flood(number_of_faces_, input_.number_of_input_vertices(), budget);
     for(auto& entry : seeds) {
-      const Levels& c = entry.first;
-      std::vector<std::uint32_t> region, stack;
-      std::vector<std::uint32_t> counted_vertices;
-      auto meets = [&](std::uint32_t f) {
-        cells_of_face(f, cells);
-        return std::find(cells.begin(), cells.end(), c) != cells.end();
-      };
-      for(std::uint32_t f : entry.second)
-        if(!in_region[f] && meets(f)) {
-          in_region[f] = 1;
-          stack.push_back(f);
-        }
-      while(!stack.empty()) {
-        const std::uint32_t f = stack.back();
-        stack.pop_back();
-        region.push_back(f);
-        ++excess[c];
-        const auto& corners = input_.corners_of(f);
-        for(int e = 0; e < 3; ++e) {
-          cells_of_edge(corners[e], corners[(e + 1) % 3], cells);
-          if(std::find(cells.begin(), cells.end(), c) == cells.end())
-            continue;
-          const std::uint32_t n = input_.neighbours_of(f)[e];
-          if(n == Input::border || n > f) // each edge once (both its faces meet c)
-            --excess[c];
-          if(n != Input::border && !in_region[n]) {
-            in_region[n] = 1;
-            stack.push_back(n);
-          }
-        }
-        for(int e = 0; e < 3; ++e)
-          if(cell_of_vertex(corners[e]) == c && !vertex_counted[corners[e]]) {
-            vertex_counted[corners[e]] = 1;
-            counted_vertices.push_back(corners[e]);
-            ++excess[c];
-          }
-      }
-      for(std::uint32_t f : region)
-        in_region[f] = 0;
-      for(std::uint32_t v : counted_vertices)
-        vertex_counted[v] = 0;
+      excess[entry.first] += count_in_cell(entry.first, entry.second, flood);
+      if(flood.budget == 0)
+        return false;
+      if(faces_meeting)
+        (*faces_meeting)[entry.first] = flood.region;
     }
     const Cell_map seeded = excess;
     add_border_pieces([&](const Levels& c) {
       if(seeded.count(c))
         ++excess[c];
     });
+    return true;
+  }
+
+  /// Scratch of count_in_cell(): marks by face and by vertex, cleared after each cell.
+  struct Flood
+  {
+    Flood(std::size_t faces, std::size_t vertices, std::size_t limit)
+      : in_region(faces, 0), vertex_counted(vertices, 0), budget(limit)
+    {}
+    std::vector<std::uint8_t> in_region, vertex_counted;
+    std::size_t budget; // faces left to visit
+    std::vector<std::uint32_t> region, stack, counted_vertices;
+  };
+
+  /// #faces - #edges + #vertices meeting cell c, over the faces reached from
+  /// `seeds` (those meeting c) across edges meeting c; the faces in `flood.region`.
+  long count_in_cell(const Levels& c, const std::vector<std::uint32_t>& seeds, Flood& flood) const
+  {
+    flood.region.clear();
+    flood.counted_vertices.clear();
+    for(std::uint32_t f : seeds)
+      if(!flood.in_region[f] && face_meets(f, c)) {
+        flood.in_region[f] = 1;
+        flood.stack.push_back(f);
+      }
+    long excess = 0;
+    while(!flood.stack.empty()) {
+      if(flood.budget == 0) { // give up; unmark the faces met
+        flood.region.insert(flood.region.end(), flood.stack.begin(), flood.stack.end());
+        flood.stack.clear();
+        break;
+      }
+      --flood.budget;
+      const std::uint32_t f = flood.stack.back();
+      flood.stack.pop_back();
+      flood.region.push_back(f);
+      ++excess;
+      const auto& corners = input_.corners_of(f);
+      for(int e = 0; e < 3; ++e) {
+        if(!edge_meets(corners[e], corners[(e + 1) % 3], c))
+          continue;
+        const std::uint32_t n = input_.neighbours_of(f)[e];
+        if(n == Input::border || n > f) // each edge once (both its faces meet c)
+          --excess;
+        if(n != Input::border && !flood.in_region[n]) {
+          flood.in_region[n] = 1;
+          flood.stack.push_back(n);
+        }
+      }
+      for(std::uint32_t v : corners)
+        if(!flood.vertex_counted[v] && vertex_in(v, c)) {
+          flood.vertex_counted[v] = 1;
+          flood.counted_vertices.push_back(v);
+          ++excess;
+        }
+    }
+    for(std::uint32_t f : flood.region)
+      flood.in_region[f] = 0;
+    for(std::uint32_t v : flood.counted_vertices)
+      flood.vertex_counted[v] = 0;
     return excess;
   }
 
@@ -708,18 +828,12 @@ private:
   /// faces meeting them; their number. Those cells have ids: count_per_cell() met them.
   std::size_t locate_non_disk_cells(const Cell_map& excess)
   {
-    std::vector<Levels> cells;
-    for(const auto& entry : excess)
-      if(entry.second != 0)
-        cells.push_back(entry.first);
+    const std::vector<Levels> cells = add_non_disk_cells(excess);
     if(cells.empty())
       return 0;
-    std::sort(cells.begin(), cells.end());
     std::vector<std::size_t> defect_of_id(cell_index_.size(), std::size_t(-1));
-    for(const Levels& c : cells) {
-      defect_of_id[cell_index_.id_of(c)] = defects_.size();
-      add_defect(Topology_defect_kind::NON_DISK_CELL, c, std::vector<std::uint32_t>());
-    }
+    for(std::size_t k = 0; k < cells.size(); ++k)
+      defect_of_id[cell_index_.id_of(cells[k])] = defects_.size() - cells.size() + k;
     Work_meter meter(*progress_, Remeshing_stage::TOPOLOGY_CHECK);
     for(std::uint32_t f = 0; f < number_of_faces_; ++f) {
       meter.add(1 + face_start_[f + 1] - face_start_[f], [&] { return 0.7 + 0.3 * f / number_of_faces_; });
@@ -730,6 +844,35 @@ private:
       }
     }
     return cells.size();
+  }
+
+  /// The same from the faces count_in_suspect_cells() found in each suspect cell:
+  /// the cells of nonzero excess are among them.
+  std::size_t locate_non_disk_suspect_cells(const Cell_map& excess)
+  {
+    const std::vector<Levels> cells = add_non_disk_cells(excess);
+    for(std::size_t k = 0; k < cells.size(); ++k) {
+      std::vector<std::uint32_t>& faces = faces_in_suspect_cells_[cells[k]];
+      std::sort(faces.begin(), faces.end()); // in face order, as a scan would list them
+      Defect& d = defects_[defects_.size() - cells.size() + k];
+      for(std::uint32_t f : faces)
+        d.input_faces.push_back(input_.face_of_id(f));
+    }
+    return cells.size();
+  }
+
+  /// Adds a defect without faces for each cell of nonzero excess, in the order of
+  /// their levels, and returns those cells in that order.
+  std::vector<Levels> add_non_disk_cells(const Cell_map& excess)
+  {
+    std::vector<Levels> cells;
+    for(const auto& entry : excess)
+      if(entry.second != 0)
+        cells.push_back(entry.first);
+    std::sort(cells.begin(), cells.end());
+    for(const Levels& c : cells)
+      add_defect(Topology_defect_kind::NON_DISK_CELL, c, std::vector<std::uint32_t>());
+    return cells;
   }
 
   const Progress* progress_ = &Progress::none();
@@ -746,6 +889,7 @@ private:
   std::vector<std::uint32_t> vertex_cell_;                     // cell id by input vertex
   std::vector<std::uint32_t> crossing_start_, crossing_cells_; // by slot 3 face + edge, at the owning face
   std::vector<std::uint32_t> face_start_, face_cells_;         // cell ids by face
+  Seeds faces_in_suspect_cells_;                                // by cell, when only those were counted
   std::vector<Loop> loops_;
   std::vector<Defect> defects_;
 };
