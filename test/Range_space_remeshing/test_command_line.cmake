@@ -931,6 +931,16 @@ if(NOT err MATCHES "2 merged points \\(--strict keeps such points apart\\)")
   message(SEND_ERROR "merged points: the repair line should say --strict keeps them apart, got: ${err}")
   math(EXPR failures "${failures} + 1")
 endif()
+# --strict keeps points at one position apart: each keeps its own UV, no seam (a cube
+# whose top face has its own four points, with UVs 10 apart from the sides')
+run(0 strict_seam.ply --strict --stats --ascii ${DATA_DIR}/seam_cube.ply strict_seam.ply)
+expect_json(ON texture_coordinates carried)
+expect_json(0 texture_coordinates seam_vertices)
+run(0 repaired_seam.ply --stats --ascii ${DATA_DIR}/seam_cube.ply repaired_seam.ply)
+expect_json(4 texture_coordinates seam_vertices)
+# --sharp-angle needs a closed surface: said in the program's words
+run(2 NONE --sharp-angle 30 ${MESH_DIR}/elephant-with-holes.off sharp_border.off)
+expect_message("--sharp-angle needs a closed surface" "--sharp-angle on a mesh with a border")
 # a format without UVs: --stats says they were not written
 run(0 uv_out.off --stats --cell-size 0.05 uv.obj uv_out.off)
 expect_json(ON texture_coordinates carried)

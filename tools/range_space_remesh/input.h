@@ -49,36 +49,41 @@ using rsr_io::Position;
 using rsr_io::Position_hash;
 using Point_at = std::unordered_map<Position, std::size_t, Position_hash>;
 
-/// The first point of the soup's polygons at each position: the repair removes the
-/// points no polygon uses, so their values (a colour, a UV) are no vertex's.
-inline Point_at first_point_at_each_position(const rsr_io::Polygon_soup& soup)
+/// The points of the soup's polygons, in their order: the repair removes the others,
+/// whose values (a colour, a UV) are no vertex's.
+inline std::vector<std::size_t> used_points(const rsr_io::Polygon_soup& soup)
 {
   std::vector<std::uint8_t> used(soup.points.size(), 0);
   for(const auto& polygon : soup.polygons)
     for(std::size_t i : polygon)
       if(i < used.size())
         used[i] = 1;
-  Point_at point_at;
-  point_at.reserve(soup.points.size());
+  std::vector<std::size_t> found;
   for(std::size_t i = 0; i < soup.points.size(); ++i)
     if(used[i])
-      point_at.emplace(soup.points[i], i);
+      found.push_back(i);
+  return found;
+}
+
+/// The first of the used points at each position.
+inline Point_at first_point_at_each_position(const rsr_io::Polygon_soup& soup, const std::vector<std::size_t>& used)
+{
+  Point_at point_at;
+  point_at.reserve(used.size());
+  for(std::size_t i : used)
+    point_at.emplace(soup.points[i], i);
   return point_at;
 }
 
-/// Gives each vertex of `mesh` the value `value_of(i)` of the soup's point i at its
-/// position: the repair only merges points that coincide and copies points, so each
-/// vertex sits where some point of the file is (the first point there gives the value).
-template <class T, class ValueOf>
-void add_values_by_position(const Point_at& point_at, const ValueOf& value_of, const std::string& name, Mesh& mesh)
+/// Gives each vertex v of `mesh` the value `value_of(i)` of the soup's point
+/// i = point_of(v), if any.
+template <class T, class PointOf, class ValueOf>
+void add_values(const PointOf& point_of, const ValueOf& value_of, const std::string& name, Mesh& mesh)
 {
   auto values = mesh.add_property_map<Mesh::Vertex_index, T>(name).first;
-  for(auto v : vertices(mesh)) {
-    const auto& p = mesh.point(v);
-    const auto found = point_at.find({{p.x(), p.y(), p.z()}});
-    if(found != point_at.end())
-      values[v] = value_of(found->second);
-  }
+  for(auto v : vertices(mesh))
+    if(const std::optional<std::size_t> i = point_of(v))
+      values[v] = value_of(*i);
 }
 
 /// The positions whose points (of polygons) have different UVs: a texture seam given
@@ -96,41 +101,53 @@ inline std::size_t positions_with_several_uvs(const rsr_io::Polygon_soup& soup, 
 }
 
 /// Where the soup's vertex values come from, found before the repair renumbers its
-/// polygons: the point that gives each position its values, and the positions with
-/// several UVs.
+/// polygons: the used points in order (the vertices of a mesh the repair did not
+/// change), the point that gives each position its values (where the repair merged
+/// points, or copied them: each vertex sits where some point of the file is), and
+/// the positions with several UVs (a seam once merged).
 struct Soup_values
 {
-  Point_at point_at; // empty if the soup has no colours and no UVs
-  std::size_t uv_seam_vertices = 0;
+  std::vector<std::size_t> used;  // empty if the soup has no colours and no UVs
+  Point_at point_at;               // likewise
+  std::size_t position_seams = 0;
 };
 
 inline Soup_values soup_values(const rsr_io::Polygon_soup& soup)
 {
   Soup_values values;
   if(soup.colors.empty() && soup.uvs.empty())
-    values.uv_seam_vertices = soup.uv_seam_points;
-  else {
-    values.point_at = first_point_at_each_position(soup);
-    values.uv_seam_vertices =
-        soup.uv_seam_points + (soup.uvs.empty() ? 0 : positions_with_several_uvs(soup, values.point_at));
-  }
+    return values;
+  values.used = used_points(soup);
+  values.point_at = first_point_at_each_position(soup, values.used);
+  values.position_seams = soup.uvs.empty() ? 0 : positions_with_several_uvs(soup, values.point_at);
   return values;
 }
 
 /// The soup's vertex colours and texture coordinates on `input.mesh`; UVs that are
 /// not one per vertex are dropped (counted in `input`, reported once the output is
-/// written by report_dropped_uvs(): a run that fails says only why).
+/// written by report_dropped_uvs(): a run that fails says only why). A mesh the
+/// repair did not change has the used points as vertices, in order, even where two
+/// are at one position (--strict keeps them apart): vertex k takes the k-th's values.
 inline void add_vertex_values(const rsr_io::Polygon_soup& soup, const Soup_values& values, Input& input)
 {
+  const bool as_in_file = !input.repairs.repaired() && num_vertices(input.mesh) == values.used.size();
   input.uv_missing_corners = soup.uv_missing_corners;
-  input.uv_seam_vertices = values.uv_seam_vertices;
+  input.uv_seam_vertices = soup.uv_seam_points + (as_in_file ? 0 : values.position_seams);
+  const Mesh& mesh = input.mesh;
+  auto point_of = [&](Mesh::Vertex_index v) -> std::optional<std::size_t> {
+    if(as_in_file)
+      return values.used[v.idx()];
+    const auto& p = mesh.point(v);
+    const auto found = values.point_at.find({{p.x(), p.y(), p.z()}});
+    return found == values.point_at.end() ? std::nullopt : std::optional<std::size_t>(found->second);
+  };
   if(!soup.colors.empty())
-    add_values_by_position<CGAL::IO::Color>(values.point_at, [&](std::size_t i) {
+    add_values<CGAL::IO::Color>(point_of, [&](std::size_t i) {
       const auto& c = soup.colors[i];
       return CGAL::IO::Color(c[0], c[1], c[2]);
     }, "v:color", input.mesh);
   if(input.uv_seam_vertices == 0 && !soup.uvs.empty())
-    add_values_by_position<K::Point_2>(values.point_at, [&](std::size_t i) {
+    add_values<K::Point_2>(point_of, [&](std::size_t i) {
       return K::Point_2(soup.uvs[i][0], soup.uvs[i][1]);
     }, "v:uv", input.mesh);
 }
@@ -240,6 +257,8 @@ inline Mesh with_creases_opened(Mesh input, const Options& options)
 {
   if(!(options.sharp_angle >= 0))
     return input;
+  if(!CGAL::is_closed(input)) // what insert_crease_triangles() needs
+    fail("--sharp-angle needs a closed surface, and " + quote(options.input) + " has a border");
   Mesh creased;
   RSR::insert_crease_triangles(input, creased, options.sharp_angle);
   copy_by_position(input, find_vertex_colors(input), "v:color", creased);

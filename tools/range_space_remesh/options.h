@@ -71,7 +71,7 @@ inline const char* const usage =
     "  --sharp-angle DEG     open the creases (dihedral angle above DEG) with\n"
     "                        zero-area triangles first, so that the normal maps put\n"
     "                        arcs along them (and, unless --placement is given,\n"
-    "                        places dual vertices with 'sharp')\n"
+    "                        places dual vertices with 'sharp'); closed surfaces only\n"
     "  --color-weight C      weight of the colour in the colour maps (default 1 for\n"
     "                        position-normal-color, 0.01 for -gradient)\n"
     "  --cell-size H         cell size as a fraction of the input's bounding-box\n"

@@ -24,7 +24,7 @@
 #else
 #include <CGAL/AABB_traits.h>
 #endif
-#include <CGAL/Kernel_traits.h>
+#include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
 #include <array>
@@ -32,19 +32,21 @@
 #include <cmath>
 #include <limits>
 #include <utility>
+#include <vector>
 
 namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
 
-/// The weights of q, the point nearest to it on a triangle without area (corners on
-/// one line, or a crease's copies): those of its foot on the nearest side with two
-/// distinct ends, between those ends, so that the values vary along the line as on
-/// the input's edges; the first corner's if the corners coincide.
-inline std::array<double, 3> weights_on_flat_triangle(const Vec3& q, const std::array<Vec3, 3>& corners)
+/// The weights of q, the point nearest to it on a triangle of `corners`, on the side
+/// nearest to it (those of its foot there, between the side's ends), and the squared
+/// distance from q to that foot; the first corner's if the corners coincide.
+inline std::array<double, 3> weights_on_nearest_side(const Vec3& q, const std::array<Vec3, 3>& corners,
+                                                     double& squared_distance)
 {
   std::array<double, 3> weights = {{1, 0, 0}};
-  double nearest = std::numeric_limits<double>::infinity();
+  const Vec3 off_first = difference(q, corners[0]);
+  squared_distance = dot(off_first, off_first);
   for(std::size_t i = 0; i < 3; ++i) {
     const std::size_t from = (i + 1) % 3, to = (i + 2) % 3; // the side opposite corner i
     const Vec3 side = difference(corners[to], corners[from]);
@@ -53,8 +55,8 @@ inline std::array<double, 3> weights_on_flat_triangle(const Vec3& q, const std::
       continue;
     const double t = (std::min)((std::max)(dot(difference(q, corners[from]), side) / length2, 0.), 1.);
     const Vec3 off = difference(q, closest_on_segment(q, corners[from], corners[to]));
-    if(dot(off, off) < nearest) {
-      nearest = dot(off, off);
+    if(dot(off, off) < squared_distance) {
+      squared_distance = dot(off, off);
       weights = {{0, 0, 0}};
       weights[from] = 1 - t;
       weights[to] = t;
@@ -63,14 +65,18 @@ inline std::array<double, 3> weights_on_flat_triangle(const Vec3& q, const std::
   return weights;
 }
 
-/// The barycentric coordinates of q, a point of the triangle of `corners`, as the
-/// areas of the triangles q makes with each side over their sum. Hand-written where
-/// CGAL has `Polygon_mesh_processing::locate_in_face()`: that asserts on a triangle
-/// without area, and the zero-area triangles of insert_crease_triangles() are inputs
-/// of remesh() by design (see weights_on_flat_triangle()).
+/// The weights of q, a point of the triangle of `corners`: its barycentric coordinates
+/// as the areas of the triangles q makes with each side over their sum, unless the
+/// weights of the nearest side give back q more closely. On a flat triangle (corners
+/// on one line: a crease's copies, a split edge) the areas are rounding noise, and
+/// the unsigned areas of a point beside a needle do not give it back: the side does.
+/// Hand-written where CGAL has `Polygon_mesh_processing::locate_in_face()`: that
+/// asserts on a triangle without area, and the zero-area triangles of
+/// insert_crease_triangles() are inputs of remesh() by design.
 inline std::array<double, 3> barycentric_weights(const Vec3& q, const std::array<Vec3, 3>& corners)
 {
-  const Vec3 normal = cross(difference(corners[1], corners[0]), difference(corners[2], corners[0]));
+  double side_error = 0;
+  const std::array<double, 3> on_side = weights_on_nearest_side(q, corners, side_error);
   auto area = [&q](const Vec3& x, const Vec3& y) {
     const Vec3 n = cross(difference(x, q), difference(y, q));
     return std::sqrt(dot(n, n));
@@ -78,63 +84,83 @@ inline std::array<double, 3> barycentric_weights(const Vec3& q, const std::array
   const std::array<double, 3> areas = {area(corners[1], corners[2]), area(corners[2], corners[0]),
                                        area(corners[0], corners[1])};
   const double sum = areas[0] + areas[1] + areas[2];
-  if(dot(normal, normal) == 0 || !(sum > 0) || !std::isfinite(sum))
-    return weights_on_flat_triangle(q, corners);
-  return {{areas[0] / sum, areas[1] / sum, areas[2] / sum}};
+  if(!(sum > 0) || !std::isfinite(sum))
+    return on_side;
+  const std::array<double, 3> by_area = {{areas[0] / sum, areas[1] / sum, areas[2] / sum}};
+  Vec3 back = {{0, 0, 0}};
+  for(std::size_t i = 0; i < 3; ++i)
+    for(std::size_t d = 0; d < 3; ++d)
+      back[d] += by_area[i] * corners[i][d];
+  const Vec3 off = difference(back, q);
+  return dot(off, off) <= side_error ? by_area : on_side;
 }
 
-/// A point map that moves and scales the points of `vpm` into the cube [-1, 1]^3
-/// (centre of the bounding box at the origin, the largest side scaled by a power of
-/// two) and rounds them to multiples of 2^-60. The nearest-point search then never
-/// squares a coordinate of 1e160 into infinity, nor multiplies differences of 1e-160
-/// (or of points 1e-200 apart beside one at 1e200) into zero and divides by it: both
-/// sent a non-finite number to its exact fallback predicates, which stop the process
-/// (GMP raises SIGFPE). Rounding moves a point by at most 2^-61 of the box's side,
-/// far below what an attribute's sampling can see.
-template <class VertexPointMap, class Point>
-struct Unit_cube_point_map
+/// The points of `vpm` in double precision, scaled by a power of two so that the
+/// largest coordinate is at most 1, for the nearest-point search. In a kernel of plain
+/// doubles (`Simple_cartesian<double>`): the search need not be exact (it picks where
+/// an attribute is sampled), and the exact fallback of a filtered kernel's predicates
+/// stops the process (GMP raises SIGFPE) on the non-finite numbers that squares of
+/// coordinates of 1e160 give. A power of two scales every point exactly, keeping the
+/// precision of a small part beside a far one (a translation to the box's centre
+/// would not, nor would a coarse grid: a part 1e-30 of the box across collapsed).
+template <class VertexPointMap>
+struct Scaled_point_map
 {
+  using Point = typename CGAL::Simple_cartesian<double>::Point_3;
   using key_type = typename boost::property_traits<VertexPointMap>::key_type;
   using value_type = Point;
   using reference = Point;
   using category = boost::readable_property_map_tag;
 
   VertexPointMap vpm;
-  Vec3 centre = {{0, 0, 0}};
-  double scale = 1;
+  int exponent = 0; // points are multiplied by 2^exponent
 
   Point operator()(const Vec3& p) const
   {
-    auto on_grid = [this, &p](std::size_t d) {
-      return std::ldexp(std::nearbyint(std::ldexp((p[d] - centre[d]) * scale, 60)), -60);
-    };
-    return Point(on_grid(0), on_grid(1), on_grid(2));
+    // below 2^-197 of the largest, onto multiples of 2^-250: a product of four
+    // differences of coordinates never underflows (a speck 1e-200 beside the rest
+    // gave 0 / 0), and nothing larger moves
+    auto scaled = [this](double x) { return std::ldexp(std::nearbyint(std::ldexp(x, exponent + 250)), -250); };
+    return Point(scaled(p[0]), scaled(p[1]), scaled(p[2]));
   }
-  friend Point get(const Unit_cube_point_map& map, const key_type& key) { return map(to_vec3(get(map.vpm, key))); }
+  friend Point get(const Scaled_point_map& map, const key_type& key) { return map(to_vec3(get(map.vpm, key))); }
 };
 
-template <class Point, class TriangleMesh, class VertexPointMap>
-Unit_cube_point_map<VertexPointMap, Point> unit_cube_point_map(const TriangleMesh& tm, VertexPointMap vpm)
+template <class TriangleMesh, class VertexPointMap>
+Scaled_point_map<VertexPointMap> scaled_point_map(const TriangleMesh& tm, VertexPointMap vpm)
 {
-  Vec3 lower = {{0, 0, 0}}, upper = {{0, 0, 0}};
-  bool first = true;
+  double largest = 0;
   for(auto v : vertices(tm)) {
     const Vec3 p = to_vec3(get(vpm, v));
-    for(std::size_t d = 0; d < 3; ++d) {
-      lower[d] = first ? p[d] : (std::min)(lower[d], p[d]);
-      upper[d] = first ? p[d] : (std::max)(upper[d], p[d]);
-    }
-    first = false;
+    largest = (std::max)({largest, std::abs(p[0]), std::abs(p[1]), std::abs(p[2])});
   }
-  Unit_cube_point_map<VertexPointMap, Point> map{vpm, {{0, 0, 0}}, 1};
-  double side = 0;
-  for(std::size_t d = 0; d < 3; ++d) {
-    map.centre[d] = lower[d] / 2 + upper[d] / 2; // halves first: no overflow
-    side = (std::max)(side, upper[d] / 2 - lower[d] / 2);
-  }
-  if(side > 0 && std::isfinite(side))
-    map.scale = std::ldexp(1., -std::ilogb(side) - 1); // side * scale in [0.5, 1)
+  Scaled_point_map<VertexPointMap> map{vpm, 0};
+  if(largest > 0 && std::isfinite(largest))
+    map.exponent = -std::ilogb(largest) - 1; // largest * 2^exponent in [0.5, 1)
   return map;
+}
+
+/// The faces of `tm` with an area at the points of `vpm`, where the nearest point is
+/// searched. A face without area (a crease's copies, a split edge's corners on one line,
+/// a part too small for the scale) lies on edges of faces around it, which have its
+/// corners' values; the nearest point on it was 0 / 0 for CGAL's search in doubles. All
+/// of them if none has an area.
+template <class TriangleMesh, class PointMap>
+std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> faces_with_area(const TriangleMesh& tm,
+                                                                                         const PointMap& vpm)
+{
+  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> found;
+  for(auto f : faces(tm)) {
+    const auto h = halfedge(f, tm);
+    const Vec3 a = to_vec3(get(vpm, source(h, tm))), b = to_vec3(get(vpm, target(h, tm))),
+               c = to_vec3(get(vpm, target(next(h, tm), tm)));
+    const Vec3 n = cross(difference(b, a), difference(c, a));
+    if(n[0] != 0 || n[1] != 0 || n[2] != 0)
+      found.push_back(f);
+  }
+  if(found.empty())
+    found.assign(faces(tm).first, faces(tm).second);
+  return found;
 }
 
 /// Puts at every vertex of `out` the mix of the attributes' input values at the
@@ -144,31 +170,31 @@ void sample_attributes_at_nearest_points(const TriangleMesh& tm, VertexPointMap 
                                          OutVertexPointMap out_vpm, const Attributes& attributes,
                                          const Progress& progress)
 {
-  using Point = typename boost::property_traits<VertexPointMap>::value_type;
-  using Kernel = typename CGAL::Kernel_traits<Point>::Kernel;
-  using Primitive = CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, Unit_cube_point_map<VertexPointMap, Point>>;
+  using Kernel = CGAL::Simple_cartesian<double>;
+  using Primitive = CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, Scaled_point_map<VertexPointMap>>;
 #if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits_3<Kernel, Primitive>>;
 #else
   using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
 #endif
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  if(num_faces(tm) == 0)
+  const auto scaled_vpm = scaled_point_map(tm, vpm);
+  const auto searched = faces_with_area(tm, scaled_vpm);
+  if(searched.empty())
     return;
-  const auto unit_vpm = unit_cube_point_map<Point>(tm, vpm);
-  Tree tree(faces(tm).first, faces(tm).second, tm, unit_vpm);
+  Tree tree(searched.begin(), searched.end(), tm, scaled_vpm);
   tree.accelerate_distance_queries();
   std::array<std::pair<vertex_descriptor, double>, 3> sources;
   std::size_t done = 0;
   for(auto v : vertices(out)) {
     progress.report_every(Remeshing_stage::RELAXATION, done++, num_vertices(out));
-    const auto nearest = tree.closest_point_and_primitive(unit_vpm(to_vec3(get(out_vpm, v))));
+    const auto nearest = tree.closest_point_and_primitive(scaled_vpm(to_vec3(get(out_vpm, v))));
     const auto h = halfedge(nearest.second, tm);
     const std::array<vertex_descriptor, 3> corners = {source(h, tm), target(h, tm), target(next(h, tm), tm)};
     const std::array<double, 3> weights =
-        barycentric_weights(to_vec3(nearest.first), {{to_vec3(get(unit_vpm, corners[0])),
-                                                      to_vec3(get(unit_vpm, corners[1])),
-                                                      to_vec3(get(unit_vpm, corners[2]))}});
+        barycentric_weights(to_vec3(nearest.first), {{to_vec3(get(scaled_vpm, corners[0])),
+                                                      to_vec3(get(scaled_vpm, corners[1])),
+                                                      to_vec3(get(scaled_vpm, corners[2]))}});
     for(int i = 0; i < 3; ++i)
       sources[i] = {corners[i], weights[i]};
     attributes.put_mixed(v, sources);
