@@ -12,6 +12,7 @@
 // lines would waver. Each output vertex takes the values at the nearest point of the
 // input (CGAL's AABB tree finds it and its face).
 
+#include <CGAL/Range_space_remeshing/Remeshing_error.h>
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Vec3.h>
 #include <CGAL/Range_space_remeshing/internal/Vertex_attributes.h>
@@ -140,6 +141,24 @@ Scaled_point_map<VertexPointMap> scaled_point_map(const TriangleMesh& tm, Vertex
   return map;
 }
 
+/// Throws Remeshing_error (bad input) if an edge of `tm` is shorter than 2^-220 of its
+/// largest coordinate (after scaled_point_map()) without being of length 0: on a part
+/// so small beside the rest (1e-66), the rounding onto multiples of 2^-250 would move
+/// its points by more than 2^-30 of its edges, and below that collapse it, so that it
+/// took another part's values.
+template <class TriangleMesh, class PointMap>
+void check_scale_range(const TriangleMesh& tm, const PointMap& scaled)
+{
+  for(auto e : edges(tm)) {
+    const auto h = halfedge(e, tm);
+    const Vec3 d = difference(to_vec3(get(scaled.vpm, source(h, tm))), to_vec3(get(scaled.vpm, target(h, tm))));
+    const double longest = std::ldexp((std::max)({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])}), scaled.exponent);
+    if(longest > 0 && longest < std::ldexp(1., -220))
+      throw Remeshing_error("the input's parts differ in size by more than 2^220 (an edge of less than 1e-66 of "
+                            "its extent): its vertex attributes cannot be sampled on it");
+  }
+}
+
 /// The faces of `tm` with an area at the points of `vpm`, where the nearest point is
 /// searched. A face without area (a crease's copies, a split edge's corners on one line,
 /// a part too small for the scale) lies on edges of faces around it, which have its
@@ -179,6 +198,7 @@ void sample_attributes_at_nearest_points(const TriangleMesh& tm, VertexPointMap 
 #endif
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   const auto scaled_vpm = scaled_point_map(tm, vpm);
+  check_scale_range(tm, scaled_vpm);
   const auto searched = faces_with_area(tm, scaled_vpm);
   if(searched.empty())
     return;
