@@ -387,6 +387,45 @@ void test_needles_and_far_parts(const std::string& data)
   CHECK(near_cube < 1e-9);
 }
 
+/// A part flat at the scale of doubles beside another: a needle, a closed tetrahedron
+/// 2 long and 1e-80 thick (its faces lose their area on the sampling's scaled points),
+/// beside a cube. Its faces
+/// were left out of the nearest-point search, so it took the cube's values.
+void test_flat_part()
+{
+  const Mesh lattice = make_lattice_cube(2);
+  Mesh input = lattice, needle;
+  const Point corners[4] = {Point(3, 0, 0), Point(5, 0, 0), Point(3.5, 1e-80, 0), Point(4.5, 0, 1e-80)};
+  std::vector<Vertex> in_input, in_needle;
+  for(const Point& p : corners) {
+    in_input.push_back(input.add_vertex(p));
+    in_needle.push_back(needle.add_vertex(p));
+  }
+  for(const std::array<int, 3>& f : {std::array<int, 3>{{0, 2, 1}}, {{0, 1, 3}}, {{1, 2, 3}}, {{2, 0, 3}}}) {
+    input.add_face(in_input[f[0]], in_input[f[1]], in_input[f[2]]);
+    needle.add_face(in_needle[f[0]], in_needle[f[1]], in_needle[f[2]]);
+  }
+  CHECK(CGAL::is_closed(input) && num_faces(input) == num_faces(lattice) + 4);
+  Mesh out;
+  auto carried = out.add_property_map<Vertex, Point>("v:carried_point").first;
+  RSR::remesh(input, out, params::grid_spacing(0.25).vertex_attribute_maps(input.points()),
+              params::vertex_attribute_maps(carried));
+  double off = 0;
+  std::size_t at_needle = 0;
+  for(Vertex v : vertices(out)) {
+    const Point& p = out.point(v);
+    if(p.x() < 2.5)
+      continue;
+    ++at_needle;
+    const Point& q = get(carried, v);
+    off = (std::max)({off, distance_to(needle, q), std::sqrt(CGAL::squared_distance(p, q)) - distance_to(needle, p)});
+  }
+  std::cout << "remesh, a needle 1e-80 thick beside a cube: " << at_needle
+            << " vertices at the needle, carried positions off by " << off << std::endl;
+  CHECK(at_needle > 10);
+  CHECK(off < 1e-9);
+}
+
 int main(int argc, char** argv)
 {
   if(argc < 2) {
@@ -398,5 +437,6 @@ int main(int argc, char** argv)
   test_remesh();
   test_flat_triangles_and_extreme_scales();
   test_needles_and_far_parts(argv[1]);
+  test_flat_part();
   return report("test_attributes");
 }

@@ -21,8 +21,10 @@
 #include <CGAL/AABB_tree.h>
 #include <CGAL/version.h>
 #if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
+#include <CGAL/AABB_segment_primitive_3.h>
 #include <CGAL/AABB_traits_3.h>
 #else
+#include <CGAL/AABB_segment_primitive.h>
 #include <CGAL/AABB_traits.h>
 #endif
 #include <CGAL/Simple_cartesian.h>
@@ -55,7 +57,10 @@ inline std::array<double, 3> weights_on_nearest_side(const Vec3& q, const std::a
     if(!(length2 > 0))
       continue;
     const double t = (std::min)((std::max)(dot(difference(q, corners[from]), side) / length2, 0.), 1.);
-    const Vec3 off = difference(q, closest_on_segment(q, corners[from], corners[to]));
+    Vec3 foot;
+    for(std::size_t d = 0; d < 3; ++d)
+      foot[d] = corners[from][d] + t * side[d];
+    const Vec3 off = difference(q, foot);
     if(dot(off, off) < squared_distance) {
       squared_distance = dot(off, off);
       weights = {{0, 0, 0}};
@@ -94,6 +99,39 @@ inline std::array<double, 3> barycentric_weights(const Vec3& q, const std::array
       back[d] += by_area[i] * corners[i][d];
   const Vec3 off = difference(back, q);
   return dot(off, off) <= side_error ? by_area : on_side;
+}
+
+/// The weights of q, a point of the line of the corners of a face without area: those
+/// of the two corners next to each other along the line between which it lies, so that
+/// a corner in the middle (a split edge's, a crease's copy) keeps its own values.
+inline std::array<double, 3> weights_along_line(const Vec3& q, const std::array<Vec3, 3>& corners)
+{
+  std::size_t from = 0; // the longest side, from corner `from` to the next: the line's direction
+  double longest = 0;
+  for(std::size_t i = 0; i < 3; ++i) {
+    const Vec3 side = difference(corners[(i + 1) % 3], corners[i]);
+    if(dot(side, side) > longest) {
+      longest = dot(side, side);
+      from = i;
+    }
+  }
+  std::array<double, 3> weights = {{1, 0, 0}};
+  if(!(longest > 0))
+    return weights;
+  const Vec3 axis = difference(corners[(from + 1) % 3], corners[from]);
+  std::array<double, 3> at; // the corners' positions along the line
+  for(std::size_t i = 0; i < 3; ++i)
+    at[i] = dot(difference(corners[i], corners[from]), axis);
+  std::array<std::size_t, 3> order = {{0, 1, 2}};
+  std::sort(order.begin(), order.end(), [&at](std::size_t i, std::size_t j) { return at[i] < at[j]; });
+  const double s = dot(difference(q, corners[from]), axis);
+  const std::size_t low = s <= at[order[1]] ? order[0] : order[1], high = s <= at[order[1]] ? order[1] : order[2];
+  const double span = at[high] - at[low];
+  const double t = span > 0 ? (std::min)((std::max)((s - at[low]) / span, 0.), 1.) : 0.;
+  weights = {{0, 0, 0}};
+  weights[low] = 1 - t;
+  weights[high] += t;
+  return weights;
 }
 
 /// The points of `vpm` in double precision, scaled by a power of two so that the
@@ -159,28 +197,122 @@ void check_scale_range(const TriangleMesh& tm, const PointMap& scaled)
   }
 }
 
-/// The faces of `tm` with an area at the points of `vpm`, where the nearest point is
-/// searched. A face without area (a crease's copies, a split edge's corners on one line,
-/// a part too small for the scale) lies on edges of faces around it, which have its
-/// corners' values; the nearest point on it was 0 / 0 for CGAL's search in doubles. All
-/// of them if none has an area.
+/// The faces of `tm` split by whether they have an area at the points of `vpm` (the
+/// scaled points). A face without area (a crease's copies, a split edge's corners on one
+/// line, a part flat at the scale of doubles: a tetrahedron 1e-80 thick) is searched as
+/// its longest side: CGAL's nearest point on it in doubles was 0 / 0, and leaving it out
+/// gave a part made only of such faces the values of another.
 template <class TriangleMesh, class PointMap>
-std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> faces_with_area(const TriangleMesh& tm,
-                                                                                         const PointMap& vpm)
+struct Searched_faces
 {
-  std::vector<typename boost::graph_traits<TriangleMesh>::face_descriptor> found;
-  for(auto f : faces(tm)) {
-    const auto h = halfedge(f, tm);
-    const Vec3 a = to_vec3(get(vpm, source(h, tm))), b = to_vec3(get(vpm, target(h, tm))),
-               c = to_vec3(get(vpm, target(next(h, tm), tm)));
-    const Vec3 n = cross(difference(b, a), difference(c, a));
-    if(n[0] != 0 || n[1] != 0 || n[2] != 0)
-      found.push_back(f);
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using Segment = typename CGAL::Simple_cartesian<double>::Segment_3;
+
+  std::vector<face_descriptor> with_area;
+  std::vector<face_descriptor> flat;
+  std::vector<Segment> longest_sides; // of the faces in `flat`, in their order
+
+  Searched_faces(const TriangleMesh& tm, const PointMap& vpm)
+  {
+    for(face_descriptor f : faces(tm)) {
+      const std::array<Vec3, 3> c = corners(f, tm, vpm);
+      const Vec3 n = cross(difference(c[1], c[0]), difference(c[2], c[0]));
+      if(n[0] != 0 || n[1] != 0 || n[2] != 0) {
+        with_area.push_back(f);
+        continue;
+      }
+      flat.push_back(f);
+      longest_sides.push_back(longest_side(c));
+    }
   }
-  if(found.empty())
-    found.assign(faces(tm).first, faces(tm).second);
-  return found;
-}
+
+  static std::array<Vec3, 3> corners(face_descriptor f, const TriangleMesh& tm, const PointMap& vpm)
+  {
+    const auto h = halfedge(f, tm);
+    return {{to_vec3(get(vpm, source(h, tm))), to_vec3(get(vpm, target(h, tm))),
+             to_vec3(get(vpm, target(next(h, tm), tm)))}};
+  }
+
+  static Segment longest_side(const std::array<Vec3, 3>& c)
+  {
+    std::size_t from = 0;
+    double longest = -1;
+    for(std::size_t i = 0; i < 3; ++i) {
+      const Vec3 side = difference(c[(i + 1) % 3], c[i]);
+      if(dot(side, side) > longest) {
+        longest = dot(side, side);
+        from = i;
+      }
+    }
+    const Vec3& a = c[from];
+    const Vec3& b = c[(from + 1) % 3];
+    using Point = typename CGAL::Simple_cartesian<double>::Point_3;
+    return Segment(Point(a[0], a[1], a[2]), Point(b[0], b[1], b[2]));
+  }
+};
+
+/// The nearest point of the input to a query and the input face it lies on, from the
+/// trees of the faces with an area and of the longest sides of those without.
+template <class TriangleMesh, class PointMap>
+class Nearest_face_search
+{
+  using Kernel = CGAL::Simple_cartesian<double>;
+  using Faces = Searched_faces<TriangleMesh, PointMap>;
+  using face_descriptor = typename Faces::face_descriptor;
+  using Segment_iterator = typename std::vector<typename Faces::Segment>::const_iterator;
+  using Triangle_primitive = CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, PointMap>;
+#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
+  using Segment_primitive = CGAL::AABB_segment_primitive_3<Kernel, Segment_iterator>;
+  using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits_3<Kernel, Triangle_primitive>>;
+  using Segment_tree = CGAL::AABB_tree<CGAL::AABB_traits_3<Kernel, Segment_primitive>>;
+#else
+  using Segment_primitive = CGAL::AABB_segment_primitive<Kernel, Segment_iterator>;
+  using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Triangle_primitive>>;
+  using Segment_tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Segment_primitive>>;
+#endif
+
+public:
+  struct Hit
+  {
+    face_descriptor face;
+    Vec3 point;
+    bool flat; // the face has no area: weigh along its line
+  };
+
+  Nearest_face_search(const TriangleMesh& tm, const PointMap& vpm) : faces_(tm, vpm)
+  {
+    if(!faces_.with_area.empty()) {
+      triangles_.insert(faces_.with_area.begin(), faces_.with_area.end(), tm, vpm);
+      triangles_.accelerate_distance_queries();
+    }
+    if(!faces_.flat.empty()) {
+      segments_.insert(faces_.longest_sides.cbegin(), faces_.longest_sides.cend());
+      segments_.accelerate_distance_queries();
+    }
+  }
+
+  Hit nearest(const typename Kernel::Point_3& q) const
+  {
+    Hit hit{face_descriptor(), Vec3{{0, 0, 0}}, false};
+    double best = std::numeric_limits<double>::infinity();
+    if(!faces_.with_area.empty()) {
+      const auto found = triangles_.closest_point_and_primitive(q);
+      best = CGAL::squared_distance(q, found.first);
+      hit = {found.second, to_vec3(found.first), false};
+    }
+    if(!faces_.flat.empty()) {
+      const auto found = segments_.closest_point_and_primitive(q);
+      if(CGAL::squared_distance(q, found.first) < best)
+        hit = {faces_.flat[std::size_t(found.second - faces_.longest_sides.cbegin())], to_vec3(found.first), true};
+    }
+    return hit;
+  }
+
+private:
+  Faces faces_;
+  Triangle_tree triangles_;
+  Segment_tree segments_;
+};
 
 /// Puts at every vertex of `out` the mix of the attributes' input values at the
 /// nearest point of `tm` (its vertex points `vpm`) to the vertex's point (`out_vpm`).
@@ -189,32 +321,22 @@ void sample_attributes_at_nearest_points(const TriangleMesh& tm, VertexPointMap 
                                          OutVertexPointMap out_vpm, const Attributes& attributes,
                                          const Progress& progress)
 {
-  using Kernel = CGAL::Simple_cartesian<double>;
-  using Primitive = CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, Scaled_point_map<VertexPointMap>>;
-#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits_3<Kernel, Primitive>>;
-#else
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive>>;
-#endif
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  const auto scaled_vpm = scaled_point_map(tm, vpm);
-  check_scale_range(tm, scaled_vpm);
-  const auto searched = faces_with_area(tm, scaled_vpm);
-  if(searched.empty())
+  using Scaled = Scaled_point_map<VertexPointMap>;
+  if(faces(tm).empty())
     return;
-  Tree tree(searched.begin(), searched.end(), tm, scaled_vpm);
-  tree.accelerate_distance_queries();
+  const Scaled scaled_vpm = scaled_point_map(tm, vpm);
+  check_scale_range(tm, scaled_vpm);
+  const Nearest_face_search<TriangleMesh, Scaled> search(tm, scaled_vpm);
   std::array<std::pair<vertex_descriptor, double>, 3> sources;
   std::size_t done = 0;
   for(auto v : vertices(out)) {
     progress.report_every(Remeshing_stage::RELAXATION, done++, num_vertices(out));
-    const auto nearest = tree.closest_point_and_primitive(scaled_vpm(to_vec3(get(out_vpm, v))));
-    const auto h = halfedge(nearest.second, tm);
+    const auto hit = search.nearest(scaled_vpm(to_vec3(get(out_vpm, v))));
+    const auto h = halfedge(hit.face, tm);
     const std::array<vertex_descriptor, 3> corners = {source(h, tm), target(h, tm), target(next(h, tm), tm)};
-    const std::array<double, 3> weights =
-        barycentric_weights(to_vec3(nearest.first), {{to_vec3(get(scaled_vpm, corners[0])),
-                                                      to_vec3(get(scaled_vpm, corners[1])),
-                                                      to_vec3(get(scaled_vpm, corners[2]))}});
+    const std::array<Vec3, 3> at = Searched_faces<TriangleMesh, Scaled>::corners(hit.face, tm, scaled_vpm);
+    const std::array<double, 3> weights = hit.flat ? weights_along_line(hit.point, at) : barycentric_weights(hit.point, at);
     for(int i = 0; i < 3; ++i)
       sources[i] = {corners[i], weights[i]};
     attributes.put_mixed(v, sources);
