@@ -32,6 +32,7 @@ using namespace test;
 namespace params = RSR::parameters;
 using UV = K::Point_2;
 using Vertex = Mesh::Vertex_index;
+using Halfedge = Mesh::Halfedge_index;
 
 /// The spherical texture coordinates of the direction of p.
 UV analytic_uv(const Point& p)
@@ -314,17 +315,47 @@ void test_flat_triangles_and_extreme_scales()
   Mesh quads;
   auto carried = quads.add_property_map<Vertex, Point>("v:carried_point").first;
   bool refused = false; // the rest is too small beside it to sample its attributes
+  std::size_t reports = 0; // of the remesh's progress: the refusal comes before its work
   try {
-    RSR::remesh(far, quads, params::grid_spacing(1e198).vertex_attribute_maps(far.points()),
+    RSR::remesh(far, quads,
+                params::grid_spacing(1e198)
+                    .vertex_attribute_maps(far.points())
+                    .progress_visitor([&reports](RSR::Remeshing_stage, double) { ++reports; return true; }),
                 params::vertex_attribute_maps(carried));
   } catch(const RSR::Remeshing_error& e) {
     refused = e.kind() == RSR::Remeshing_error::Kind::BAD_INPUT;
-    std::cout << "remesh, one vertex at 1e200: refused (" << e.what() << ")" << std::endl;
+    std::cout << "remesh, one vertex at 1e200: refused after " << reports << " progress reports (" << e.what() << ")"
+              << std::endl;
   }
   CHECK(refused);
+  CHECK(reports == 0);
   Mesh plain; // without attributes, it is remeshed
   RSR::remesh(far, plain, params::grid_spacing(1e198));
   CHECK(num_vertices(plain) > 0);
+}
+
+/// One edge 1e-72 long among edges of 1 (a cube's edge split next to a corner, the two
+/// faces beside it split at the new vertex): the features around it are not small, and
+/// its faces, flat at the scale of the search, are searched as segments. It was refused
+/// as a part too small to sample.
+void test_one_short_edge()
+{
+  Mesh cube = make_lattice_cube(2);
+  Halfedge from_origin = Halfedge();
+  for(Halfedge h : halfedges(cube))
+    if(cube.point(source(h, cube)) == CGAL::ORIGIN && !is_border(h, cube) && !is_border(opposite(h, cube), cube))
+      from_origin = h;
+  CHECK(from_origin != Halfedge());
+  const Point end = cube.point(target(from_origin, cube));
+  const Halfedge to_new = CGAL::Euler::split_edge(from_origin, cube); // origin -> new -> end
+  cube.point(target(to_new, cube)) = Point(end.x() * 1e-72, end.y() * 1e-72, end.z() * 1e-72);
+  const Halfedge back = opposite(from_origin, cube); // end -> new, then new -> origin
+  CGAL::Euler::split_face(to_new, next(from_origin, cube), cube);
+  CGAL::Euler::split_face(back, next(opposite(to_new, cube), cube), cube);
+  CHECK(CGAL::is_triangle_mesh(cube) && CGAL::is_valid_polygon_mesh(cube));
+  const double off = carried_error(cube, cube, 1.0);
+  std::cout << "remesh, cube with one edge of 1e-72: carried positions off by " << off << std::endl;
+  CHECK(off < 1e-12);
 }
 
 /// Triangles whose three corners are distinct points of one line (a cube whose edges
@@ -438,5 +469,6 @@ int main(int argc, char** argv)
   test_flat_triangles_and_extreme_scales();
   test_needles_and_far_parts(argv[1]);
   test_flat_part();
+  test_one_short_edge();
   return report("test_attributes");
 }

@@ -859,8 +859,8 @@ file(WRITE ${WORK_DIR}/uv.ply "ply\nformat ascii 1.0\nelement vertex 6\nproperty
      "3 0 2 4\n3 2 1 4\n3 1 3 4\n3 3 0 4\n3 2 0 5\n3 1 2 5\n3 3 1 5\n3 0 3 5\n")
 run(0 uv_from_ply.obj --stats --cell-size 0.05 uv.ply uv_from_ply.obj)
 expect_json(ON texture_coordinates carried)
-run(0 uv_again.off --stats uv_dual.ply uv_again.off)
-expect_json(ON texture_coordinates carried)
+run(0 uv_again.off --stats uv_dual.ply uv_again.off) # OFF stores no UVs: not sampled
+expect_json(OFF texture_coordinates carried)
 list(LENGTH uv_st number_of_st)
 if(NOT number_of_st EQUAL 2)
   message(SEND_ERROR "PLY texture coordinates: the output has ${number_of_st} of the properties s t")
@@ -943,8 +943,26 @@ run(2 NONE --sharp-angle 30 ${MESH_DIR}/elephant-with-holes.off sharp_border.off
 expect_message("--sharp-angle needs a closed surface" "--sharp-angle on a mesh with a border")
 # a format without UVs: --stats says they were not written
 run(0 uv_out.off --stats --cell-size 0.05 uv.obj uv_out.off)
-expect_json(ON texture_coordinates carried)
+expect_json(OFF texture_coordinates carried)
 expect_json(OFF texture_coordinates written)
+# UVs on a triangle 1e-70 across beside the octahedron cannot be sampled: refused
+# before the remesh where OUTPUT would hold them, not asked for where it would not
+# (it was refused for .off and .stl too)
+file(WRITE ${WORK_DIR}/uv_speck.obj "${octahedron_v}v 0 0 0\nv 1e-70 0 0\nv 0 1e-70 0\n${octahedron_vt}"
+     "vt 0 0\nvt 1 0\nvt 0 1\n${octahedron_f}f 7/7 8/8 9/9\n")
+run(2 uv_speck_out.obj --cell-size 0.05 uv_speck.obj uv_speck_out.obj)
+expect_message("feature smaller than 2\\^-220" "UVs on a speck, to OBJ")
+foreach(ext off stl)
+  run(0 uv_speck_out.${ext} --stats --cell-size 0.05 uv_speck.obj uv_speck_out.${ext})
+  expect_json(OFF texture_coordinates carried)
+endforeach()
+# a bounding box whose diagonal is beyond doubles (an octahedron 2e308 across): said,
+# where the message was that the cell size must be a positive finite number
+file(WRITE ${WORK_DIR}/huge_octahedron.obj "v 1e308 0 0\nv -1e308 0 0\nv 0 1e308 0\nv 0 -1e308 0\n"
+     "v 0 0 1e308\nv 0 0 -1e308\n${octahedron_vt}${octahedron_f}")
+run(2 huge_octahedron.off huge_octahedron.obj huge_octahedron.off)
+expect_message("diagonal exceeds the largest double" "a box 2e308 across")
+run(0 huge_octahedron.off --absolute --cell-size 2e306 huge_octahedron.obj huge_octahedron.off)
 
 if(failures GREATER 0)
   message(FATAL_ERROR "${failures} command-line check(s) failed")

@@ -86,6 +86,20 @@ void test_default_cell_size(const Mesh& elephant)
   const RSR::Statistics s = RSR::primal_remesh(elephant, primal, RSR::parameters::range_map(doubled));
   CHECK(std::abs(s.cell_size - 2 * stats.primal.cell_size) < 1e-9 * s.cell_size);
   (void)vpm;
+  // a box whose sides (2e308) and diagonal are beyond doubles: 1% of the diagonal is not
+  // (it was refused as a box "without extent")
+  Mesh huge = make_sphere(1e308, 2);
+  Mesh huge_quads;
+  const RSR::Remesh_statistics at_huge = RSR::remesh(huge, huge_quads);
+  std::cout << "sphere of radius 1e308, defaults: " << num_faces(huge_quads) << " quads, cell size "
+            << at_huge.primal.cell_size << std::endl;
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(huge);
+  long double squares = 0; // long double: its range holds the squares of 2e308
+  for(int i = 0; i < 3; ++i)
+    squares += ((long double)(box.max(i)) - box.min(i)) * ((long double)(box.max(i)) - box.min(i));
+  const double expected = double(RSR::default_relative_cell_size * std::sqrt(squares));
+  CHECK(std::abs(at_huge.primal.cell_size - expected) < 1e-12 * expected);
+  CHECK(num_faces(huge_quads) > 100 && CGAL::is_valid_polygon_mesh(huge_quads));
 }
 
 void test_target_vertices(const Mesh& elephant)

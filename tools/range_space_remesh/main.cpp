@@ -73,7 +73,12 @@ double cell_size_in_range_space(const Mesh& input, Options& options)
       diagonal = std::hypot(std::hypot(dx, dy), dz);
     if(!(diagonal > 0))
       fail("the input's bounding box is a single point");
+    if(!std::isfinite(diagonal))
+      fail("the input's bounding-box diagonal exceeds the largest double (1.8e308): scale the input down, or give "
+           "--absolute --cell-size");
     h *= diagonal;
+    if(!std::isfinite(h))
+      fail("--cell-size times the bounding-box diagonal exceeds the largest double (1.8e308)");
     options.length_unit = diagonal;
   }
   if(options.map->uses_camera) {

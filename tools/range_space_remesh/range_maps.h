@@ -10,6 +10,7 @@
 
 #include "failure.h"
 #include "map_registry.h"
+#include "mesh_formats.h"
 #include "mesh_types.h"
 #include "options.h"
 #include "progress.h"
@@ -70,13 +71,19 @@ RSR::Remesh_statistics run(const Mesh& input, const NamedParameters& np, const O
 }
 
 /// `run` with the input's vertex colours and texture coordinates added to `np`, where
-/// it has them.
+/// it has them and OUTPUT's format stores them: sampling the others would be work
+/// for nothing, and could refuse an input on which they cannot be sampled.
 template <class NamedParameters>
 RSR::Remesh_statistics run_with_vertex_values(const Mesh& input, const NamedParameters& np, const Options& options,
                                               Mesh& output)
 {
-  const auto colors = find_vertex_colors(input);
-  const auto uvs = find_vertex_uvs(input);
+  const auto format = rsr_io::format_of(options.output);
+  auto colors = find_vertex_colors(input);
+  auto uvs = find_vertex_uvs(input);
+  if(!format || !format->stores_colors)
+    colors.reset();
+  if(!format || !format->stores_uvs)
+    uvs.reset();
   if(colors && uvs)
     return run(input, np.vertex_color_map(*colors).vertex_texture_map(*uvs), options, output);
   if(colors)

@@ -116,16 +116,19 @@ void remove_isolated_points(PointRange& points, PolygonRange& polygons, Input_re
 }
 
 /// Merges the points at the same position if the soup is then still an oriented
-/// 2-manifold.
+/// 2-manifold; `edges` are then the merged soup's.
 template <class PointRange, class PolygonRange>
-void merge_if_still_a_mesh(PointRange& points, PolygonRange& polygons, Input_repair_statistics& statistics)
+void merge_if_still_a_mesh(PointRange& points, PolygonRange& polygons, Soup_edges& edges,
+                           Input_repair_statistics& statistics)
 {
   PointRange merged_points = points;
   PolygonRange merged_polygons = polygons;
   const std::size_t merged =
       CGAL::Polygon_mesh_processing::merge_duplicate_points_in_polygon_soup(merged_points, merged_polygons);
-  if(!soup_problem(merged_points, merged_polygons).empty())
+  Soup_edges merged_edges;
+  if(!soup_problem(merged_points, merged_polygons, merged_edges).empty())
     return;
+  edges = std::move(merged_edges);
   points.swap(merged_points);
   polygons.swap(merged_polygons);
   statistics.merged_points += merged;
@@ -337,13 +340,14 @@ Input_repair_statistics prepare_input(PointRange& points, PolygonRange& polygons
   internal::check_soup_values(points, polygons);
   internal::remove_isolated_points(points, polygons, statistics); // never repaired away: unused
   statistics.triangulated_polygons = internal::split_polygons(points, polygons);
-  std::string problem = internal::soup_problem(points, polygons);
+  internal::Soup_edges edges; // sorted by the last check, of the soup as it is then
+  std::string problem = internal::soup_problem(points, polygons, edges);
   if(problem == internal::coinciding_points) {
     // a mesh already, with points at the same position: joined where that closes seams
     // or a soup of separate polygons into a mesh, kept apart where it would not
     // (as at the pinched holes of CGAL's elephant-with-holes) and with REFUSE
     if(repair == Input_repair::REPAIR)
-      internal::merge_if_still_a_mesh(points, polygons, statistics);
+      internal::merge_if_still_a_mesh(points, polygons, edges, statistics);
     problem.clear();
   }
   if(!problem.empty()) {
@@ -353,12 +357,12 @@ Input_repair_statistics prepare_input(PointRange& points, PolygonRange& polygons
     if(polygons.empty())
       throw Remeshing_error("the input has no face left after removing its degenerate faces");
     // points left at the same position are apart in the mesh: what CGAL's repair keeps
-    const std::string left = internal::soup_problem(points, polygons);
+    const std::string left = internal::soup_problem(points, polygons, edges);
     if(!left.empty() && left != internal::coinciding_points)
       throw Remeshing_error("the input could not be repaired into a 2-manifold mesh: " + left);
   }
   clear(mesh);
-  internal::soup_to_mesh(points, polygons, mesh);
+  internal::soup_to_mesh(points, polygons, edges, mesh);
   if(!problem.empty())
     internal::orient_outward(mesh, statistics);
   if(!internal::has_a_non_degenerate_face(mesh))

@@ -228,6 +228,18 @@ double sample_vertex_attributes(const TriangleMesh& tm, const QuadMesh& quads, c
   }
 }
 
+/// Refuses, before the remesh, an input on which the vertex attributes asked for
+/// cannot be sampled (see check_scale_range()).
+template <class TriangleMesh, class NamedParameters, class NamedParametersOut>
+void check_vertex_attributes(const TriangleMesh& tm, const NamedParameters& np, const NamedParametersOut& np_out)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  if constexpr(!std::decay_t<decltype(vertex_attributes_of(np, np_out))>::empty)
+    check_attributes_can_be_sampled(tm, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                                         get_const_property_map(CGAL::vertex_point, tm)));
+}
+
 /// The body of `remesh()`.
 template <class ConcurrencyTag, class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
 Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const NamedParameters& np,
@@ -240,6 +252,7 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
   const std::size_t target = target_vertices_of(np);
   Quad_improvement improvement = quad_improvement_of(np); // refused before the first run
   improvement.untangle_near_target = target;
+  check_vertex_attributes(tm, np, np_out);
   remove_all_elements(quads);
   return emptied_on_cancel(quads, [&] {
     const double h = cell_size_of(tm, np);

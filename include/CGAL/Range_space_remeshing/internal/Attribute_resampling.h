@@ -179,22 +179,40 @@ Scaled_point_map<VertexPointMap> scaled_point_map(const TriangleMesh& tm, Vertex
   return map;
 }
 
-/// Throws Remeshing_error (bad input) if an edge of `tm` is shorter than 2^-220 of its
-/// largest coordinate (after scaled_point_map()) without being of length 0: on a part
-/// so small beside the rest (1e-66), the rounding onto multiples of 2^-250 would move
-/// its points by more than 2^-30 of its edges, and below that collapse it, so that it
-/// took another part's values.
+/// Throws Remeshing_error (bad input) if a vertex of `tm` has all its edges shorter
+/// than 2^-220 of the input's largest coordinate (after scaled_point_map()), without
+/// being of length 0: the rounding onto multiples of 2^-250 would move the points of
+/// such a feature (a part 1e-66 of the box across, the rest beside a vertex at 1e200)
+/// by more than 2^-30 of its size, and below that collapse it, so that its values were
+/// another part's. One short edge among longer ones is sampled: its faces, flat at that
+/// scale, are searched as segments, and its ends keep the values of their neighbours.
 template <class TriangleMesh, class PointMap>
 void check_scale_range(const TriangleMesh& tm, const PointMap& scaled)
 {
-  for(auto e : edges(tm)) {
-    const auto h = halfedge(e, tm);
-    const Vec3 d = difference(to_vec3(get(scaled.vpm, source(h, tm))), to_vec3(get(scaled.vpm, target(h, tm))));
-    const double longest = std::ldexp((std::max)({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])}), scaled.exponent);
-    if(longest > 0 && longest < std::ldexp(1., -220))
-      throw Remeshing_error("the input's parts differ in size by more than 2^220 (an edge of less than 1e-66 of "
-                            "its extent): its vertex attributes cannot be sampled on it");
+  const double smallest = std::ldexp(1., -220);
+  for(auto v : vertices(tm)) {
+    if(halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
+      continue;
+    const Vec3 p = to_vec3(get(scaled.vpm, v));
+    double star = 0; // the longest edge at v, in units of the largest coordinate
+    for(auto h : halfedges_around_target(v, tm)) {
+      const Vec3 d = difference(p, to_vec3(get(scaled.vpm, source(h, tm))));
+      star = (std::max)({star, std::ldexp((std::max)({std::abs(d[0]), std::abs(d[1]), std::abs(d[2])}),
+                                          scaled.exponent)});
+    }
+    if(star > 0 && star < smallest)
+      throw Remeshing_error("the input has a feature smaller than 2^-220 (about 6e-67) of its largest coordinate "
+                            "(all edges at a vertex): its vertex attributes cannot be sampled there",
+                            Remeshing_error::Kind::BAD_INPUT);
   }
+}
+
+/// check_scale_range() on `tm` at the points of `vpm`: whether the vertex attributes
+/// can be sampled, asked before the remesh so that a refusal comes before its work.
+template <class TriangleMesh, class VertexPointMap>
+void check_attributes_can_be_sampled(const TriangleMesh& tm, VertexPointMap vpm)
+{
+  check_scale_range(tm, scaled_point_map(tm, vpm));
 }
 
 /// The faces of `tm` split by whether they have an area at the points of `vpm` (the
@@ -316,6 +334,7 @@ private:
 
 /// Puts at every vertex of `out` the mix of the attributes' input values at the
 /// nearest point of `tm` (its vertex points `vpm`) to the vertex's point (`out_vpm`).
+/// `tm` passed check_attributes_can_be_sampled().
 template <class TriangleMesh, class VertexPointMap, class PolygonMesh, class OutVertexPointMap, class Attributes>
 void sample_attributes_at_nearest_points(const TriangleMesh& tm, VertexPointMap vpm, const PolygonMesh& out,
                                          OutVertexPointMap out_vpm, const Attributes& attributes,
@@ -326,7 +345,6 @@ void sample_attributes_at_nearest_points(const TriangleMesh& tm, VertexPointMap 
   if(faces(tm).empty())
     return;
   const Scaled scaled_vpm = scaled_point_map(tm, vpm);
-  check_scale_range(tm, scaled_vpm);
   const Nearest_face_search<TriangleMesh, Scaled> search(tm, scaled_vpm);
   std::array<std::pair<vertex_descriptor, double>, 3> sources;
   std::size_t done = 0;

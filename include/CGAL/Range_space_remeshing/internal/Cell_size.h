@@ -49,16 +49,24 @@ double default_cell_size(const TriangleMesh& tm, const RangeMap& range_map)
     }
   }
   // the diagonal, scaled by the longest side: the squares of huge or tiny sides would
-  // overflow or underflow
+  // overflow or underflow; and in halves where a side is beyond doubles (-1e308 to 1e308)
+  bool halves = false;
+  for(int q = 0; q < D; ++q)
+    halves = halves || !std::isfinite(high[q] - low[q]);
+  auto side = [&](int q) { return halves ? high[q] / 2 - low[q] / 2 : high[q] - low[q]; };
   double longest = 0, sum = 0;
   for(int q = 0; q < D; ++q)
-    longest = (std::max)(longest, high[q] - low[q]);
-  if(!(longest > 0) || !std::isfinite(longest))
+    longest = (std::max)(longest, side(q));
+  if(!(longest > 0))
     throw Remeshing_error("the mapped input has no extent (a single point, or no face): give a grid_spacing",
                           Remeshing_error::Kind::BAD_INPUT);
   for(int q = 0; q < D; ++q)
-    sum += ((high[q] - low[q]) / longest) * ((high[q] - low[q]) / longest);
-  return default_relative_cell_size * longest * std::sqrt(sum);
+    sum += (side(q) / longest) * (side(q) / longest);
+  const double h = (halves ? 2 : 1) * default_relative_cell_size * longest * std::sqrt(sum);
+  if(!std::isfinite(h))
+    throw Remeshing_error("the mapped input's extent exceeds the largest double (1.8e308): give a grid_spacing",
+                          Remeshing_error::Kind::BAD_INPUT);
+  return h;
 }
 
 // number_of_target_vertices: the counts accepted, and the runs tried at most

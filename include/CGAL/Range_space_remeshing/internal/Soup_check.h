@@ -48,6 +48,7 @@ struct Soup_corners
 {
   std::vector<std::size_t> point_of, next_of;
 
+  Soup_corners() = default;
   template <class PolygonRange>
   explicit Soup_corners(const PolygonRange& polygons)
   {
@@ -118,15 +119,31 @@ inline std::vector<Polygon_edge> sorted_polygon_edges(const Soup_corners& corner
   return edges;
 }
 
+/// A soup's corners and its polygons' edges sorted (`sorted_polygon_edges()`): what
+/// `soup_problem()` finds, which `soup_to_mesh()` builds the mesh from when the soup
+/// did not change in between (one sort of the edges, not two).
+struct Soup_edges
+{
+  Soup_corners corners;
+  std::vector<Polygon_edge> sorted;
+
+  Soup_edges() = default;
+  template <class PolygonRange>
+  explicit Soup_edges(const PolygonRange& polygons) : corners(polygons), sorted(sorted_polygon_edges(corners))
+  {}
+  bool empty() const { return corners.size() == 0; }
+};
+
 /// What `soup_problem()` says of a soup that is an oriented 2-manifold mesh but for
 /// points at the same position (a seam, or a soup of separate polygons).
 inline const char* const coinciding_points = "two vertices are at the same position";
 
 /// What keeps the soup from being an oriented 2-manifold mesh without unused or
 /// coinciding points, in words ("" if nothing): the first problem found, coinciding
-/// points only if there is no other.
+/// points only if there is no other. `edges` gets the soup's sorted edges where the
+/// check gets as far as sorting them (it stays empty otherwise).
 template <class PointRange, class PolygonRange>
-std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
+std::string soup_problem(const PointRange& points, const PolygonRange& polygons, Soup_edges& edges)
 {
   std::vector<std::size_t> last_polygon(points.size(), std::size_t(-1)); // the last polygon using a point
   for(std::size_t f = 0; f < polygons.size(); ++f) {
@@ -143,23 +160,23 @@ std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
 
   // Across an inner edge a->b / b->a, the corners at a are neighbours around a, and
   // those at b around b; a manifold vertex has all its corners in one such fan.
-  const Soup_corners corners(polygons);
-  const std::vector<Polygon_edge> edges = sorted_polygon_edges(corners);
-  const auto& point_of = corners.point_of;
-  const auto& next_of = corners.next_of;
+  edges = Soup_edges(polygons);
+  const auto& point_of = edges.corners.point_of;
+  const auto& next_of = edges.corners.next_of;
+  const std::vector<Polygon_edge>& sorted = edges.sorted;
   std::vector<std::size_t> fans(point_of.size()); // union-find forest of the corners
   std::iota(fans.begin(), fans.end(), std::size_t(0));
   auto unite = [&fans](std::size_t a, std::size_t b) { fans[union_find_root(fans, a)] = union_find_root(fans, b); };
-  for(std::size_t i = 0; i < edges.size();) {
+  for(std::size_t i = 0; i < sorted.size();) {
     std::size_t j = i + 1;
-    while(j < edges.size() && edges[j].key == edges[i].key)
+    while(j < sorted.size() && sorted[j].key == sorted[i].key)
       ++j;
     if(j - i > 2)
       return "an edge is shared by more than two faces";
     if(j - i == 2) {
-      if(edges[i].forward == edges[i + 1].forward)
+      if(sorted[i].forward == sorted[i + 1].forward)
         return "two faces sharing an edge have opposite orientations";
-      const std::size_t c1 = edges[i].corner, c2 = edges[i + 1].corner;
+      const std::size_t c1 = sorted[i].corner, c2 = sorted[i + 1].corner;
       unite(c1, next_of[c2]);
       unite(c2, next_of[c1]);
     }
@@ -187,6 +204,13 @@ std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
       return coinciding_points;
 
   return "";
+}
+
+template <class PointRange, class PolygonRange>
+std::string soup_problem(const PointRange& points, const PolygonRange& polygons)
+{
+  Soup_edges edges;
+  return soup_problem(points, polygons, edges);
 }
 
 } // namespace internal

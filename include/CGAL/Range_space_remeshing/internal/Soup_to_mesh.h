@@ -10,14 +10,15 @@
 // `Euler::add_face()`, which looks each new edge up around its vertex, so a vertex of
 // valence k costs k^2 steps; a fan of a few hundred thousand triangles around one
 // point (a cone's apex, a large polygon split from one corner) does not finish. Here
-// the halfedges are paired by sorting the polygons' edges once, as `soup_problem()`
-// does to check the soup.
+// the halfedges are paired by the polygons' edges sorted once, by `soup_problem()`
+// when it checked the soup.
 
 #ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_SOUP_TO_MESH_H
 #define CGAL_RANGE_SPACE_REMESHING_INTERNAL_SOUP_TO_MESH_H
 
 #include <CGAL/Range_space_remeshing/internal/Soup_check.h>
 
+#include <CGAL/assertions.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/properties.h>
 #include <CGAL/Cartesian_converter.h>
@@ -148,19 +149,28 @@ private:
 
 /// Adds to the empty `mesh` the soup `points`, `polygons`, which `soup_problem()` finds
 /// to be an oriented 2-manifold (points at the same position allowed): the vertices in
-/// the points' order, the faces in the polygons' order.
+/// the points' order, the faces in the polygons' order. `edges`: the soup's, as that
+/// check left them.
+template <class PointRange, class PolygonRange, class PolygonMesh>
+void soup_to_mesh(const PointRange& points, const PolygonRange& polygons, const Soup_edges& edges,
+                  PolygonMesh& mesh)
+{
+  using GT = boost::graph_traits<PolygonMesh>;
+  CGAL_precondition_code(std::size_t corners = 0; for(const auto& polygon : polygons) corners += polygon.size();)
+  CGAL_precondition(edges.corners.size() == corners && edges.sorted.size() == corners);
+  reserve(mesh, typename GT::vertices_size_type(points.size()), typename GT::edges_size_type(edges.corners.size()),
+          typename GT::faces_size_type(polygons.size()));
+  Soup_to_mesh<PolygonMesh> builder(edges.corners, mesh);
+  builder.add_vertices(points);
+  builder.add_edges(edges.sorted);
+  builder.add_faces(polygons);
+  builder.link_borders();
+}
+
 template <class PointRange, class PolygonRange, class PolygonMesh>
 void soup_to_mesh(const PointRange& points, const PolygonRange& polygons, PolygonMesh& mesh)
 {
-  using GT = boost::graph_traits<PolygonMesh>;
-  const Soup_corners corners(polygons);
-  reserve(mesh, typename GT::vertices_size_type(points.size()), typename GT::edges_size_type(corners.size()),
-          typename GT::faces_size_type(polygons.size()));
-  Soup_to_mesh<PolygonMesh> builder(corners, mesh);
-  builder.add_vertices(points);
-  builder.add_edges(sorted_polygon_edges(corners));
-  builder.add_faces(polygons);
-  builder.link_borders();
+  soup_to_mesh(points, polygons, Soup_edges(polygons), mesh);
 }
 
 } // namespace internal
