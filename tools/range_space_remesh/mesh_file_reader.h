@@ -326,8 +326,11 @@ inline Polygon_soup read_off(std::string_view text, const std::string& name)
           fail("vertex " + std::to_string(v) + " has a colour that is not a number");
         is_float = is_float || words[std::size_t(c)].find_first_of(".eE") != std::string_view::npos;
       }
-      for(int c = 0; c < 3; ++c)
+      for(int c = 0; c < 3; ++c) {
+        if(!std::isfinite(values[std::size_t(c)]))
+          fail("vertex " + std::to_string(v) + " has a colour that is not a finite number");
         color[std::size_t(c)] = color_channel(values[std::size_t(c)], is_float);
+      }
       any_color = true;
     }
     colors.push_back(color);
@@ -636,8 +639,11 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
           for(int c = 0; c < 3; ++c) {
             if(coordinate[c] == int(p))
               point[std::size_t(c)] = value;
-            if(channel[c] == int(p))
+            if(channel[c] == int(p)) {
+              if(colored && !std::isfinite(value))
+                fail("its vertex " + std::to_string(e) + " has a colour that is not a finite number");
               color[std::size_t(c)] = color_channel(value, is_float(property.type));
+            }
           }
           for(int c = 0; c < 2; ++c)
             if(texture[c] == int(p) && is_vertex) {
@@ -803,8 +809,11 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name)
       soup.points.push_back({{x[0], x[1], x[2]}});
       std::array<unsigned char, 3> color{};
       if(n >= 6) { // x y z r g b, colours in [0, 1]
-        for(int c = 0; c < 3; ++c)
+        for(int c = 0; c < 3; ++c) {
+          if(!std::isfinite(x[3 + c]))
+            fail(line, "a vertex colour is not a finite number");
           color[std::size_t(c)] = color_channel(x[3 + c], true);
+        }
         any_color = true;
       }
       colors.push_back(color);
