@@ -101,13 +101,11 @@ inline std::array<double, 3> barycentric_weights(const Vec3& q, const std::array
   return dot(off, off) <= side_error ? by_area : on_side;
 }
 
-/// The weights of q, a point of the line of the corners of a face without area: those
-/// of the two corners next to each other along the line between which it lies, so that
-/// a corner in the middle (a split edge's, a crease's copy) keeps its own values.
-inline std::array<double, 3> weights_along_line(const Vec3& q, const std::array<Vec3, 3>& corners)
+/// The corner the longest side of the triangle of `corners` starts at (it ends at the next).
+inline std::size_t longest_side_start(const std::array<Vec3, 3>& corners)
 {
-  std::size_t from = 0; // the longest side, from corner `from` to the next: the line's direction
-  double longest = 0;
+  std::size_t from = 0;
+  double longest = -1;
   for(std::size_t i = 0; i < 3; ++i) {
     const Vec3 side = difference(corners[(i + 1) % 3], corners[i]);
     if(dot(side, side) > longest) {
@@ -115,10 +113,19 @@ inline std::array<double, 3> weights_along_line(const Vec3& q, const std::array<
       from = i;
     }
   }
-  std::array<double, 3> weights = {{1, 0, 0}};
-  if(!(longest > 0))
-    return weights;
+  return from;
+}
+
+/// The weights of q, a point of the line of the corners of a face without area: those
+/// of the two corners next to each other along the line between which it lies, so that
+/// a corner in the middle (a split edge's, a crease's copy) keeps its own values.
+inline std::array<double, 3> weights_along_line(const Vec3& q, const std::array<Vec3, 3>& corners)
+{
+  const std::size_t from = longest_side_start(corners); // the line's direction
   const Vec3 axis = difference(corners[(from + 1) % 3], corners[from]);
+  std::array<double, 3> weights = {{1, 0, 0}};
+  if(!(dot(axis, axis) > 0))
+    return weights;
   std::array<double, 3> at; // the corners' positions along the line
   for(std::size_t i = 0; i < 3; ++i)
     at[i] = dot(difference(corners[i], corners[from]), axis);
@@ -253,15 +260,7 @@ struct Searched_faces
 
   static Segment longest_side(const std::array<Vec3, 3>& c)
   {
-    std::size_t from = 0;
-    double longest = -1;
-    for(std::size_t i = 0; i < 3; ++i) {
-      const Vec3 side = difference(c[(i + 1) % 3], c[i]);
-      if(dot(side, side) > longest) {
-        longest = dot(side, side);
-        from = i;
-      }
-    }
+    const std::size_t from = longest_side_start(c);
     const Vec3& a = c[from];
     const Vec3& b = c[(from + 1) % 3];
     using Point = typename CGAL::Simple_cartesian<double>::Point_3;
