@@ -952,8 +952,108 @@ endif()
 run(0 strict_seam.ply --strict --stats --ascii ${DATA_DIR}/seam_cube.ply strict_seam.ply)
 expect_json(ON texture_coordinates carried)
 expect_json(0 texture_coordinates seam_vertices)
+# repaired, the merge puts two UVs on 4 vertices: the 4 edges of the top are opened as
+# creases, each side's copies with its own UVs (the UVs were dropped)
 run(0 repaired_seam.ply --stats --ascii ${DATA_DIR}/seam_cube.ply repaired_seam.ply)
-expect_json(4 texture_coordinates seam_vertices)
+expect_json(ON texture_coordinates carried)
+expect_json(0 texture_coordinates seam_vertices)
+expect_json(4 attribute_seams opened_edges)
+
+# Flat colours the way PLY and COFF store them: a cube whose every side has its own 4
+# points in its own colour. The merged points took the first side's colour, blended
+# over the others (12,544 of 18,816 vertices inside a side were wrong); the 12 edges
+# are now opened, and every output vertex inside a side has exactly that side's colour.
+string(CONCAT flat_cube_points "1 -1 -1 255 0 0 0 0\n1 1 -1 255 0 0 1 0\n1 1 1 255 0 0 1 1\n1 -1 1 255 0 0 0 1\n"
+    "-1 -1 -1 0 255 0 0 0\n-1 1 -1 0 255 0 1 0\n-1 1 1 0 255 0 1 1\n-1 -1 1 0 255 0 0 1\n"
+    "-1 1 -1 0 0 255 0 0\n-1 1 1 0 0 255 1 0\n1 1 1 0 0 255 1 1\n1 1 -1 0 0 255 0 1\n"
+    "-1 -1 -1 255 255 0 0 0\n-1 -1 1 255 255 0 1 0\n1 -1 1 255 255 0 1 1\n1 -1 -1 255 255 0 0 1\n"
+    "-1 -1 1 0 255 255 0 0\n1 -1 1 0 255 255 1 0\n1 1 1 0 255 255 1 1\n-1 1 1 0 255 255 0 1\n"
+    "-1 -1 -1 255 0 255 0 0\n1 -1 -1 255 0 255 1 0\n1 1 -1 255 0 255 1 1\n-1 1 -1 255 0 255 0 1\n")
+string(CONCAT flat_cube_faces "3 0 1 2\n3 0 2 3\n3 7 6 5\n3 7 5 4\n3 8 9 10\n3 8 10 11\n3 15 14 13\n3 15 13 12\n"
+    "3 16 17 18\n3 16 18 19\n3 23 22 21\n3 23 21 20\n")
+file(WRITE ${WORK_DIR}/flat_cube.ply "ply\nformat ascii 1.0\nelement vertex 24\nproperty float x\n"
+     "property float y\nproperty float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+     "property float s\nproperty float t\nelement face 12\nproperty list uchar int vertex_indices\n"
+     "end_header\n${flat_cube_points}${flat_cube_faces}")
+# the side colour of a vertex line "x y z r g b ..." with exactly one coordinate at
+# +-1 (within 0.001: inside a side), or "" (on a cube edge, where the strip's vertices
+# blend)
+function(flat_cube_side_color line result)
+  string(REGEX REPLACE "[ \t]+" ";" fields "${line}")
+  list(GET fields 0 x)
+  list(GET fields 1 y)
+  list(GET fields 2 z)
+  set(colors "x1=255 0 0" "x-1=0 255 0" "y1=0 0 255" "y-1=255 255 0" "z1=0 255 255" "z-1=255 0 255")
+  set(found "")
+  set(sides 0)
+  foreach(axis x y z)
+    string(REGEX REPLACE "^-" "" magnitude "${${axis}}")
+    if(magnitude GREATER 0.999) # if() compares numbers as doubles
+      if("${${axis}}" MATCHES "^-")
+        set(sign "-1")
+      else()
+        set(sign "1")
+      endif()
+      math(EXPR sides "${sides} + 1")
+      foreach(entry ${colors})
+        if(entry MATCHES "^${axis}${sign}=(.*)$")
+          set(found "${CMAKE_MATCH_1}")
+        endif()
+      endforeach()
+    endif()
+  endforeach()
+  if(NOT sides EQUAL 1)
+    set(found "")
+  endif()
+  set(${result} "${found}" PARENT_SCOPE)
+endfunction()
+run(0 flat_cube_out.ply --stats --ascii --cell-size 0.04 flat_cube.ply flat_cube_out.ply)
+expect_json(12 attribute_seams opened_edges)
+expect_json(ON texture_coordinates carried)
+file(STRINGS ${WORK_DIR}/flat_cube_out.ply flat_cube_lines)
+set(in_header TRUE)
+set(inside 0)
+set(wrong 0)
+foreach(line IN LISTS flat_cube_lines)
+  if(in_header)
+    if(line STREQUAL "end_header")
+      set(in_header FALSE)
+    endif()
+    continue()
+  endif()
+  string(REGEX MATCH "^[-0-9.e]+ [-0-9.e]+ [-0-9.e]+ [0-9]+ [0-9]+ [0-9]+" vertex "${line}")
+  if(NOT vertex OR line MATCHES "^[0-9]+ [0-9]+ [0-9]+ [0-9]+$")
+    continue() # a face line
+  endif()
+  flat_cube_side_color("${line}" expected)
+  if(expected STREQUAL "")
+    continue()
+  endif()
+  math(EXPR inside "${inside} + 1")
+  string(REGEX REPLACE "^[^ ]+ [^ ]+ [^ ]+ ([0-9]+ [0-9]+ [0-9]+).*$" "\\1" color "${line}")
+  if(NOT color STREQUAL expected)
+    math(EXPR wrong "${wrong} + 1")
+    set(example "${line} (expected ${expected})")
+  endif()
+endforeach()
+if(inside LESS 50 OR wrong GREATER 0)
+  message(SEND_ERROR "flat-coloured cube: ${wrong} of ${inside} vertices inside a side have another colour, e.g. ${example}")
+  math(EXPR failures "${failures} + 1")
+endif()
+# with --sharp-angle the seams and the creases are opened together (they coincide here)
+run(0 flat_cube_sharp.off --stats --sharp-angle 30 --cell-size 0.04 flat_cube.ply flat_cube_sharp.off)
+expect_json(12 attribute_seams opened_edges)
+# a surface with a border cannot be opened: the colours are blended across, said in
+# one line and counted (two squares of one plane, red and blue, each with its 4 points)
+file(WRITE ${WORK_DIR}/two_colors.off "COFF\n8 4 0\n0 0 0 255 0 0 255\n1 0 0 255 0 0 255\n1 1 0 255 0 0 255\n"
+     "0 1 0 255 0 0 255\n1 0 0 0 0 255 255\n2 0 0 0 0 255 255\n2 1 0 0 0 255 255\n1 1 0 0 0 255 255\n"
+     "3 0 1 2\n3 0 2 3\n3 4 5 6\n3 4 6 7\n")
+run(0 two_colors_out.off --stats --cell-size 0.2 two_colors.off two_colors_out.off)
+expect_json(1 attribute_seams blended_edges)
+if(NOT err MATCHES "1 edge where the file's colours or texture coordinates change, on a surface with a border")
+  message(SEND_ERROR "blended colours across a seam on a border surface: not said, got: ${err}")
+  math(EXPR failures "${failures} + 1")
+endif()
 # --sharp-angle needs a closed surface: said in the program's words
 run(2 NONE --sharp-angle 30 ${MESH_DIR}/elephant-with-holes.off sharp_border.off)
 expect_message("--sharp-angle needs a closed surface" "--sharp-angle on a mesh with a border")

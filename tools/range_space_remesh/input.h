@@ -9,6 +9,7 @@
 #ifndef RANGE_SPACE_REMESHING_TOOLS_INPUT_H
 #define RANGE_SPACE_REMESHING_TOOLS_INPUT_H
 
+#include "attribute_seams.h"
 #include "failure.h"
 #include "mesh_file_reader.h"
 #include "mesh_types.h"
@@ -43,6 +44,9 @@ struct Input
   // why the texture coordinates were dropped (see report_dropped_uvs())
   std::size_t uv_seam_vertices = 0;   // vertices with several UVs
   std::size_t uv_missing_corners = 0; // face corners without a UV where others have one
+  // edges where the file's colours or UVs change (see attribute_seams.h)
+  std::size_t opened_seam_edges = 0, blended_seam_edges = 0;
+  bool creases_opened = false; // with the seams, for --sharp-angle
 };
 
 using rsr_io::Position;
@@ -128,9 +132,14 @@ inline Soup_values soup_values(const rsr_io::Polygon_soup& soup)
 /// written by report_dropped_uvs(): a run that fails says only why). A mesh the
 /// repair did not change has the used points as vertices, in order, even where two
 /// are at one position (--strict keeps them apart): vertex k takes the k-th's values.
+inline bool vertices_as_in_file(const Soup_values& values, const Input& input)
+{
+  return !input.repairs.repaired() && num_vertices(input.mesh) == values.used.size();
+}
+
 inline void add_vertex_values(const rsr_io::Polygon_soup& soup, const Soup_values& values, Input& input)
 {
-  const bool as_in_file = !input.repairs.repaired() && num_vertices(input.mesh) == values.used.size();
+  const bool as_in_file = vertices_as_in_file(values, input);
   input.uv_missing_corners = soup.uv_missing_corners;
   input.uv_seam_vertices = soup.uv_seam_points + (as_in_file ? 0 : values.position_seams);
   const Mesh& mesh = input.mesh;
@@ -150,6 +159,53 @@ inline void add_vertex_values(const rsr_io::Polygon_soup& soup, const Soup_value
     add_values<K::Point_2>(point_of, [&](std::size_t i) {
       return K::Point_2(soup.uvs[i][0], soup.uvs[i][1]);
     }, "v:uv", input.mesh);
+}
+
+/// The triangles of the soup's polygons, if the file has points at one position with
+/// different colours or UVs (a seam the repair's merge would blur): taken before the
+/// repair, which renumbers the polygons.
+inline std::optional<Corner_points> seam_corners(const rsr_io::Polygon_soup& soup, const Soup_values& values)
+{
+  const Seam_values seam_values(soup);
+  if(!seam_values.any() || values.used.empty() || !has_points_with_different_values(seam_values, values.used, values.point_at))
+    return std::nullopt;
+  return Corner_points(soup);
+}
+
+/// Where the repair merged points with different colours or UVs: the seams opened on a
+/// closed surface, with creases sharper than `sharp_angle` degrees (if not negative),
+/// or counted on a surface with a border (see attribute_seams.h).
+inline void open_seams(const rsr_io::Polygon_soup& soup, const Soup_values& values,
+                       const std::optional<Corner_points>& corners, double sharp_angle, Input& input)
+{
+  if(!corners || vertices_as_in_file(values, input))
+    return;
+  const Seam_values seam_values(soup);
+  const Attribute_seams seams = find_attribute_seams(seam_values, *corners, input.mesh);
+  if(seams.edges == 0)
+    return;
+  if(!CGAL::is_closed(input.mesh)) {
+    input.blended_seam_edges = seams.edges;
+    return;
+  }
+  input.mesh = open_attribute_seams(input.mesh, seams, seam_values, values.point_at, sharp_angle);
+  input.opened_seam_edges = seams.edges;
+  input.creases_opened = sharp_angle >= 0;
+  if(seam_values.uvs) // each copy has its side's
+    input.uv_seam_vertices = 0;
+}
+
+/// One line on stderr when the colours or UVs of a surface with a border were blended
+/// across the edges where the file changes them.
+inline void report_blended_seams(const std::string& path, const Input& input)
+{
+  if(input.blended_seam_edges == 0)
+    return;
+  std::cerr << "range_space_remesh: " << quote(path) << ": " << input.blended_seam_edges
+            << (input.blended_seam_edges == 1 ? " edge where" : " edges where")
+            << " the file's colours or texture coordinates change, on a surface with a border: "
+               "the values are blended across (--strict keeps their points apart)"
+            << std::endl;
 }
 
 /// One line on stderr when the input's texture coordinates were dropped.
@@ -172,7 +228,7 @@ inline void report_dropped_uvs(const std::string& path, const Input& input)
 /// Reads INPUT into a triangle mesh (see rsr_io::read_mesh_file): repaired into an
 /// oriented 2-manifold unless --strict, polygons triangulated, vertex colours and
 /// texture coordinates kept.
-inline Input read_input(const std::string& path, bool strict)
+inline Input read_input(const std::string& path, bool strict, double sharp_angle)
 {
   Input input;
   const auto start = std::chrono::steady_clock::now();
@@ -188,6 +244,7 @@ inline Input read_input(const std::string& path, bool strict)
   for(const auto& p : soup.points)
     points.emplace_back(p[0], p[1], p[2]);
   const Soup_values values = soup_values(soup);
+  const std::optional<Corner_points> corners = seam_corners(soup, values);
   try {
     input.repairs = RSR::prepare_input(points, soup.polygons, input.mesh,
                                        strict ? RSR::Input_repair::REFUSE : RSR::Input_repair::REPAIR);
@@ -195,6 +252,7 @@ inline Input read_input(const std::string& path, bool strict)
     fail(quote(path) + ": " + e.what() + (strict ? " (drop --strict to repair it)" : ""));
   }
   add_vertex_values(soup, values, input);
+  open_seams(soup, values, corners, sharp_angle, input);
   const auto repaired = std::chrono::steady_clock::now();
   input.read_ms = std::chrono::duration<double, std::milli>(read - start).count();
   input.repair_ms = std::chrono::duration<double, std::milli>(repaired - read).count();
@@ -253,9 +311,9 @@ void copy_by_position(const Mesh& from, const std::optional<Map>& map, const std
 
 /// With --sharp-angle, the input with zero-area triangles along its creases, so that
 /// the normal maps see each side's normal (vertex colours and UVs follow the copies).
-inline Mesh with_creases_opened(Mesh input, const Options& options)
+inline Mesh with_creases_opened(Mesh input, const Options& options, bool already_opened)
 {
-  if(!(options.sharp_angle >= 0))
+  if(!(options.sharp_angle >= 0) || already_opened)
     return input;
   if(!CGAL::is_closed(input)) // what insert_crease_triangles() needs
     fail("--sharp-angle needs a closed surface, and " + quote(options.input) + " has a border");

@@ -137,12 +137,14 @@ int run_program(int argc, char** argv)
   std::vector<RSR::Topology_defect<Mesh::Face_index>> defects;
   options.defects = &defects;
   Io_times io;
-  Input read = read_input(options.input, options.strict);
+  Input read = read_input(options.input, options.strict, options.sharp_angle);
   io.read_ms = read.read_ms;
   io.repair_ms = read.repair_ms;
   io.uv_seam_vertices = read.uv_seam_vertices;
   io.uv_missing_corners = read.uv_missing_corners;
-  const Mesh input = with_creases_opened(std::move(read.mesh), options);
+  io.opened_seam_edges = read.opened_seam_edges;
+  io.blended_seam_edges = read.blended_seam_edges;
+  const Mesh input = with_creases_opened(std::move(read.mesh), options, read.creases_opened);
   // once, the input read: the runs of --target-vertices and --preserve-topology share it
   const std::size_t cap = vertex_cap(options);
   check_target_vertices(options, cap); // the memory left may have lowered the default cap
@@ -161,6 +163,7 @@ int run_program(int argc, char** argv)
   io.write_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - write_start).count();
   report_repairs(options.input, read.repairs);
   report_dropped_uvs(options.input, read);
+  report_blended_seams(options.input, read);
   warn_about_topology(stats, options, defects);
   if(options.stats)
     print_stats(options, input, output, stats, h, read.repairs, io);

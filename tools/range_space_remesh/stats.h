@@ -53,6 +53,8 @@ struct Io_times
   double read_ms = 0, repair_ms = 0, write_ms = 0;
   // what the reading dropped the UVs for: a texture seam, corners without UVs
   std::size_t uv_seam_vertices = 0, uv_missing_corners = 0;
+  // edges where the file's colours or UVs change: opened (closed surface) or blended
+  std::size_t opened_seam_edges = 0, blended_seam_edges = 0;
 };
 
 inline void print_stats(const Options& options, const Mesh& input, const Mesh& output, const RSR::Remesh_statistics& all,
@@ -128,6 +130,7 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                               {"written", carried && rsr_io::format_of(options.output)->stores_uvs},
                               {"seam_vertices", io.uv_seam_vertices},
                               {"corners_without", io.uv_missing_corners}};
+  j["attribute_seams"] = {{"opened_edges", io.opened_seam_edges}, {"blended_edges", io.blended_seam_edges}};
   j["input_repairs"] = {{"repaired", repairs.repaired()},
                         {"merged_points", repairs.merged_points},
                         {"removed_isolated_points", repairs.removed_isolated_points},
