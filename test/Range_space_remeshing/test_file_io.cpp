@@ -385,6 +385,19 @@ void test_texture_coordinates()
   const std::string obj_v = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\nvt 0.5 0.5\n";
   const auto seam = parse(obj_v + "f 1/1 2/2 3/3\nf 2/5 4/4 3/3\n", "obj");
   CHECK(seam.uvs.empty() && seam.uv_seam_points == 1);
+  // split (what the program asks for unless --strict): point 1 gets a copy at its
+  // position, with its colour and the second UV, which the second face's corner takes;
+  // a third corner with the first UV keeps the point itself
+  const auto split = rsr_io::internal::parse_mesh(
+      "v 0 0 0\nv 1 0 0 0.2 0.4 0.6\nv 0 1 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvt 1 1\nvt 0.5 0.5\n"
+      "f 1/1 2/2 3/3\nf 2/5 4/4 3/3\nf 2/2 4/4 1/1\nf 2/5 1/1 4/4\n",
+      "obj", "test", rsr_io::Uv_seams::SPLIT);
+  CHECK(split.uv_seam_points == 0 && split.uv_seam_copies == 1 && split.points.size() == 5 && split.uvs.size() == 5);
+  CHECK(split.points.size() == 5 && split.points[4] == split.points[1]);
+  CHECK(split.polygons.size() == 4 && split.polygons[1][0] == 4 && split.polygons[2][0] == 1 &&
+        split.polygons[3][0] == 4);
+  CHECK(split.uvs.size() == 5 && split.uvs[4][0] == 0.5 && split.uvs[1][0] == 1);
+  CHECK(split.colors.size() == 5 && split.colors[4] == split.colors[1] && split.colors[4][0] == 51);
   const auto partial = parse(obj_v + "f 1/1 2/2 3/3\nf 2 4 3\n", "obj");
   CHECK(partial.uvs.empty() && partial.uv_seam_points == 0 && partial.uv_missing_corners == 3);
   const auto relative = parse(obj_v + "f 1/-5 2/-4 3/-3\nf 2/-4 4/-2 3/-3\n", "obj");

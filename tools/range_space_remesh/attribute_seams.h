@@ -19,7 +19,6 @@
 #include <CGAL/Range_space_remeshing/insert_crease_triangles.h>
 #include <CGAL/boost/graph/helpers.h>
 
-#include <boost/functional/hash.hpp>
 #include <boost/property_map/function_property_map.hpp>
 
 #include <algorithm>
@@ -54,69 +53,69 @@ struct Seam_values
 
 inline constexpr std::size_t no_point = (std::numeric_limits<std::size_t>::max)();
 
-/// The soup's point of each corner of a mesh face, found by the positions of the face's
-/// three corners among the triangles of the soup's polygons (the repair triangulates
-/// polygons and may flip them, so a triangle is known by its set of positions). Only
-/// triangles and quadrilaterals are looked at, which keeps the table a small multiple of
-/// the file's size (a polygon of k corners holds k(k-1)(k-2)/6 triangles): the corners
-/// of larger polygons take the first point at their position, as all vertices do
-/// without a seam.
+/// The soup's point of each corner of a mesh face, found among the soup's polygons that
+/// hold the positions of the face's three corners (the repair triangulates polygons and
+/// may flip them, so a face is known by its positions): the polygons at the corner
+/// with the fewest are looked at, a few but at a pole. The first such polygon is
+/// taken: two polygons through the same three positions (a duplicate, removed by the
+/// repair, or two quadrilaterals of a pillow) are not told apart.
 class Corner_points
 {
   using Position = rsr_io::Position;
-  using Triangle = std::array<Position, 3>;
-  static constexpr std::size_t largest_polygon = 4;
 
 public:
+  /// Taken before the repair, which renumbers the soup's polygons in place (its points
+  /// stay as they are).
   explicit Corner_points(const rsr_io::Polygon_soup& soup) : soup_(soup)
   {
-    for(const auto& polygon : soup.polygons)
-      if(polygon.size() >= 3 && polygon.size() <= largest_polygon)
-        for(std::size_t a = 0; a < polygon.size(); ++a)
-          for(std::size_t b = a + 1; b < polygon.size(); ++b)
-            for(std::size_t c = b + 1; c < polygon.size(); ++c)
-              add({{polygon[a], polygon[b], polygon[c]}});
+    first_corner_.reserve(soup.polygons.size() + 1);
+    for(std::size_t f = 0; f < soup.polygons.size(); ++f) {
+      first_corner_.push_back(corners_.size());
+      for(std::size_t i : soup.polygons[f]) {
+        corners_.push_back(i);
+        if(auto& at = polygons_at_[soup.points[i]]; at.empty() || at.back() != f) // the reader checked i
+          at.push_back(f);
+      }
+    }
+    first_corner_.push_back(corners_.size());
   }
 
   /// The soup point of `mesh`'s face(h) at target(h), or no_point.
   std::size_t point(const Mesh& mesh, Mesh::Halfedge_index h) const
   {
-    const auto found = triangles_.find(key(mesh, h));
-    if(found == triangles_.end())
-      return no_point;
-    const Position p = position(mesh.point(target(h, mesh)));
-    for(std::size_t i : found->second)
-      if(soup_.points[i] == p)
-        return i;
+    const std::array<Position, 3> corners{{position(mesh.point(target(h, mesh))),
+                                           position(mesh.point(target(next(h, mesh), mesh))),
+                                           position(mesh.point(source(h, mesh)))}};
+    const std::vector<std::size_t>* fewest = nullptr;
+    for(const Position& p : corners) {
+      const auto found = polygons_at_.find(p);
+      if(found == polygons_at_.end())
+        return no_point;
+      if(!fewest || found->second.size() < fewest->size())
+        fewest = &found->second;
+    }
+    for(std::size_t f : *fewest) {
+      std::size_t at_target = no_point;
+      bool second = false, third = false;
+      for(std::size_t c = first_corner_[f]; c < first_corner_[f + 1]; ++c) {
+        const std::size_t i = corners_[c];
+        if(soup_.points[i] == corners[0])
+          at_target = i;
+        second = second || soup_.points[i] == corners[1];
+        third = third || soup_.points[i] == corners[2];
+      }
+      if(at_target != no_point && second && third)
+        return at_target;
+    }
     return no_point;
   }
 
 private:
   static Position position(const K::Point_3& p) { return {{p.x(), p.y(), p.z()}}; }
 
-  static Triangle sorted(Triangle t)
-  {
-    std::sort(t.begin(), t.end());
-    return t;
-  }
-
-  Triangle key(const Mesh& mesh, Mesh::Halfedge_index h) const
-  {
-    return sorted({{position(mesh.point(source(h, mesh))), position(mesh.point(target(h, mesh))),
-                    position(mesh.point(target(next(h, mesh), mesh)))}});
-  }
-
-  // the first polygon with a triangle keeps it (a duplicate face, removed by the repair)
-  void add(const std::array<std::size_t, 3>& corners)
-  {
-    if(corners[0] >= soup_.points.size() || corners[1] >= soup_.points.size() || corners[2] >= soup_.points.size())
-      return;
-    triangles_.emplace(sorted({{soup_.points[corners[0]], soup_.points[corners[1]], soup_.points[corners[2]]}}),
-                       corners);
-  }
-
   const rsr_io::Polygon_soup& soup_;
-  std::unordered_map<Triangle, std::array<std::size_t, 3>, boost::hash<Triangle>> triangles_;
+  std::vector<std::size_t> corners_, first_corner_; // the polygons' points, as read
+  std::unordered_map<Position, std::vector<std::size_t>, rsr_io::Position_hash> polygons_at_;
 };
 
 /// The seams of a repaired mesh: the soup point of each face corner (by halfedge index:
@@ -136,9 +135,11 @@ template <class PointAt>
 bool has_points_with_different_values(const Seam_values& values, const std::vector<std::size_t>& used,
                                       const PointAt& point_at)
 {
-  for(std::size_t i : used)
-    if(!values.same(i, point_at.at(values.soup.points[i])))
+  for(std::size_t i : used) {
+    const auto first = point_at.find(values.soup.points[i]);
+    if(first != point_at.end() && !values.same(i, first->second)) // not found: a NaN, refused by the repair
       return true;
+  }
   return false;
 }
 
@@ -175,9 +176,13 @@ inline bool is_sharp(const Mesh& mesh, Mesh::Halfedge_index h, double sharp_angl
   auto normal = [&](Mesh::Halfedge_index g) {
     const K::Point_3 &a = mesh.point(source(g, mesh)), &b = mesh.point(target(g, mesh)),
                      &c = mesh.point(target(next(g, mesh), mesh));
-    const K::Vector_3 n = CGAL::cross_product(b - a, c - a);
-    const double length = std::sqrt(n.squared_length());
-    return length > 0 ? n / length : n;
+    K::Vector_3 n = CGAL::cross_product(b - a, c - a);
+    // scaled first: the square of a huge or tiny component would overflow or underflow
+    const double largest = (std::max)({std::abs(n.x()), std::abs(n.y()), std::abs(n.z())});
+    if(!(largest > 0) || !std::isfinite(largest))
+      return n;
+    n = n / largest;
+    return n / std::sqrt(n.squared_length());
   };
   return normal(h) * normal(opposite(h, mesh)) < std::cos(sharp_angle * 3.14159265358979323846 / 180);
 }

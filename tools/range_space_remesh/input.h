@@ -97,9 +97,9 @@ inline std::size_t positions_with_several_uvs(const rsr_io::Polygon_soup& soup, 
   std::vector<std::uint8_t> on_seam(soup.points.size(), 0);
   for(const auto& polygon : soup.polygons)
     for(std::size_t i : polygon) {
-      const std::size_t first = point_at.at(soup.points[i]);
-      if(!rsr_io::same_uv(soup.uvs[i], soup.uvs[first]))
-        on_seam[first] = 1;
+      const auto first = point_at.find(soup.points[i]);
+      if(first != point_at.end() && !rsr_io::same_uv(soup.uvs[i], soup.uvs[first->second])) // not found: a NaN
+        on_seam[first->second] = 1;
     }
   return std::size_t(std::count(on_seam.begin(), on_seam.end(), 1));
 }
@@ -184,8 +184,11 @@ inline void open_seams(const rsr_io::Polygon_soup& soup, const Soup_values& valu
   const Attribute_seams seams = find_attribute_seams(seam_values, *corners, input.mesh);
   if(seams.edges == 0)
     return;
-  if(!CGAL::is_closed(input.mesh)) {
-    input.blended_seam_edges = seams.edges;
+  if(!CGAL::is_closed(input.mesh)) { // the colours are blended; the UVs are dropped (add_vertex_values())
+    Seam_values colors = seam_values;
+    colors.uvs = false;
+    if(colors.colors)
+      input.blended_seam_edges = find_attribute_seams(colors, *corners, input.mesh).edges;
     return;
   }
   input.mesh = open_attribute_seams(input.mesh, seams, seam_values, values.point_at, sharp_angle);
@@ -195,16 +198,16 @@ inline void open_seams(const rsr_io::Polygon_soup& soup, const Soup_values& valu
     input.uv_seam_vertices = 0;
 }
 
-/// One line on stderr when the colours or UVs of a surface with a border were blended
-/// across the edges where the file changes them.
+/// One line on stderr when the colours of a surface with a border were blended across
+/// the edges where the file changes them.
 inline void report_blended_seams(const std::string& path, const Input& input)
 {
   if(input.blended_seam_edges == 0)
     return;
   std::cerr << "range_space_remesh: " << quote(path) << ": " << input.blended_seam_edges
             << (input.blended_seam_edges == 1 ? " edge where" : " edges where")
-            << " the file's colours or texture coordinates change, on a surface with a border: "
-               "the values are blended across (--strict keeps their points apart)"
+            << " the file's colours change, on a surface with a border: "
+               "they are blended across (--strict keeps their points apart)"
             << std::endl;
 }
 
@@ -234,7 +237,9 @@ inline Input read_input(const std::string& path, bool strict, double sharp_angle
   const auto start = std::chrono::steady_clock::now();
   rsr_io::Polygon_soup soup;
   try {
-    soup = rsr_io::read_mesh_file(path);
+    // an OBJ texture seam as PLY stores one, points per side: opened below on a closed
+    // surface (--strict keeps points at one position apart: it would cut the surface)
+    soup = rsr_io::read_mesh_file(path, strict ? rsr_io::Uv_seams::DROP : rsr_io::Uv_seams::SPLIT);
   } catch(const rsr_io::Read_error& e) {
     fail(e.what());
   }
@@ -251,6 +256,8 @@ inline Input read_input(const std::string& path, bool strict, double sharp_angle
   } catch(const RSR::Remeshing_error& e) {
     fail(quote(path) + ": " + e.what() + (strict ? " (drop --strict to repair it)" : ""));
   }
+  // the copies are the program's, not the file's: their merge is no repair
+  input.repairs.merged_points -= (std::min)(input.repairs.merged_points, soup.uv_seam_copies);
   add_vertex_values(soup, values, input);
   open_seams(soup, values, corners, sharp_angle, input);
   const auto repaired = std::chrono::steady_clock::now();

@@ -70,6 +70,19 @@ struct Polygon_soup
   /// face corners without a texture coordinate in a file whose other corners have
   /// one: the UVs are then dropped
   std::size_t uv_missing_corners = 0;
+  /// points added by Uv_seams::SPLIT
+  std::size_t uv_seam_copies = 0;
+};
+
+/// What to do with a point that an OBJ file's faces give several texture coordinates
+/// (f v/vt with different vt at one v: a texture seam).
+enum class Uv_seams
+{
+  /// keep the point, count it in `Polygon_soup::uv_seam_points`: the UVs are dropped
+  DROP,
+  /// give each of its texture coordinates a copy of the point (at the same position,
+  /// with its colour), as PLY files store a seam; counted in `uv_seam_copies`
+  SPLIT
 };
 
 /// Whether two texture coordinates of one point are the same one: apart by at most a
@@ -727,16 +740,52 @@ inline std::size_t resolved_obj_index(long long index, std::size_t count)
   return index >= 1 && index <= n ? std::size_t(index) : 0;
 }
 
+/// The point of a corner with texture coordinate `uv` (1-based) at `point`: `point`,
+/// or its copy with that UV (made on the first such corner), for Uv_seams::SPLIT.
+class Uv_seam_copies
+{
+public:
+  Uv_seam_copies(const std::vector<std::array<double, 2>>& texture_coordinates, std::vector<std::size_t>& uv_of,
+                 Polygon_soup& soup)
+    : texture_coordinates_(texture_coordinates), uv_of_(uv_of), soup_(soup)
+  {}
+
+  std::size_t point_with(std::size_t point, std::size_t uv)
+  {
+    std::vector<std::size_t>& copies = copies_[point];
+    for(std::size_t copy : copies)
+      if(same_uv(texture_coordinates_[uv_of_[copy] - 1], texture_coordinates_[uv - 1]))
+        return copy;
+    const std::size_t copy = soup_.points.size();
+    soup_.points.push_back(soup_.points[point]);
+    if(!soup_.colors.empty())
+      soup_.colors.push_back(soup_.colors[point]);
+    uv_of_.push_back(uv);
+    copies.push_back(copy);
+    ++soup_.uv_seam_copies;
+    return copy;
+  }
+
+private:
+  const std::vector<std::array<double, 2>>& texture_coordinates_;
+  std::vector<std::size_t>& uv_of_;
+  Polygon_soup& soup_;
+  std::unordered_map<std::size_t, std::vector<std::size_t>> copies_; // by point with a seam
+};
+
 /// One UV per point from the corners' texture coordinates, into `soup.uvs`: kept only
-/// if every corner has one and each point only one (coinciding values count as one);
-/// otherwise the points with several are counted in `soup.uv_seam_points` and the
-/// corners with none in `soup.uv_missing_corners`.
+/// if every corner has one, and each point only one (coinciding values count as one)
+/// or `seams` is Uv_seams::SPLIT (a copy of the point per further one); otherwise the
+/// points with several are counted in `soup.uv_seam_points` and the corners with none
+/// in `soup.uv_missing_corners`.
 inline void uvs_of_corners(const std::vector<std::array<double, 2>>& texture_coordinates,
-                           const std::vector<std::vector<std::size_t>>& corner_uvs, Polygon_soup& soup)
+                           const std::vector<std::vector<std::size_t>>& corner_uvs, Uv_seams seams,
+                           Polygon_soup& soup)
 {
   constexpr std::size_t none = 0;
   std::vector<std::size_t> uv_of(soup.points.size(), none);
   std::vector<std::uint8_t> on_seam(soup.points.size(), 0);
+  Uv_seam_copies copies(texture_coordinates, uv_of, soup);
   std::size_t corners_without = 0;
   for(std::size_t f = 0; f < soup.polygons.size(); ++f)
     for(std::size_t c = 0; c < soup.polygons[f].size(); ++c) {
@@ -747,8 +796,12 @@ inline void uvs_of_corners(const std::vector<std::array<double, 2>>& texture_coo
       }
       if(uv_of[point] == none)
         uv_of[point] = uv;
-      else if(!same_uv(texture_coordinates[uv_of[point] - 1], texture_coordinates[uv - 1]))
-        on_seam[point] = 1;
+      else if(!same_uv(texture_coordinates[uv_of[point] - 1], texture_coordinates[uv - 1])) {
+        if(seams == Uv_seams::SPLIT)
+          soup.polygons[f][c] = copies.point_with(point, uv);
+        else
+          on_seam[point] = 1;
+      }
     }
   soup.uv_seam_points = std::size_t(std::count(on_seam.begin(), on_seam.end(), 1));
   const bool any_corner = std::any_of(uv_of.begin(), uv_of.end(), [](std::size_t uv) { return uv != none; });
@@ -767,7 +820,7 @@ inline void uvs_of_corners(const std::vector<std::array<double, 2>>& texture_coo
 /// "i//n", "i/t/n"; negative indices count back from the last vertex or texture
 /// coordinate); other lines ignored. The texture coordinates are kept where every
 /// vertex has one (see `uvs_of_corners()`).
-inline Polygon_soup read_obj(std::string_view text, const std::string& name)
+inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_seams seams)
 {
   auto fail = [&](std::size_t line, const std::string& what) -> void {
     throw Read_error(name + ": " + what + " (line " + std::to_string(line) + ")");
@@ -842,7 +895,7 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name)
   if(any_color)
     soup.colors = std::move(colors);
   if(!texture_coordinates.empty())
-    uvs_of_corners(texture_coordinates, corner_uvs, soup);
+    uvs_of_corners(texture_coordinates, corner_uvs, seams, soup);
   return soup;
 }
 
@@ -939,7 +992,8 @@ inline Polygon_soup read_stl(std::string_view text, const std::string& name)
 
 /// The soup in `text`, a file of the format with extension `extension` (see
 /// mesh_formats.h); `name` names it in messages. Throws Read_error.
-inline Polygon_soup parse_mesh(std::string_view text, const std::string& extension, const std::string& name)
+inline Polygon_soup parse_mesh(std::string_view text, const std::string& extension, const std::string& name,
+                               Uv_seams seams = Uv_seams::DROP)
 {
   if(text.empty())
     throw Read_error(name + " is empty");
@@ -954,7 +1008,7 @@ inline Polygon_soup parse_mesh(std::string_view text, const std::string& extensi
   switch(format->format) {
   case Mesh_format::OFF: return read_off(text, name);
   case Mesh_format::PLY: return read_ply(text, name);
-  case Mesh_format::OBJ: return read_obj(text, name);
+  case Mesh_format::OBJ: return read_obj(text, name, seams);
   case Mesh_format::STL: return read_stl(text, name);
   }
   throw Read_error(name + ": unsupported format"); // not reached: every format is above
@@ -963,10 +1017,10 @@ inline Polygon_soup parse_mesh(std::string_view text, const std::string& extensi
 } // namespace internal
 
 /// The soup in the file `path`, its format chosen by its extension. Throws Read_error.
-inline Polygon_soup read_mesh_file(const std::string& path)
+inline Polygon_soup read_mesh_file(const std::string& path, Uv_seams seams = Uv_seams::DROP)
 {
   const internal::Mapped_file file(path);
-  return internal::parse_mesh(file.text(), extension_of(path), "'" + path + "'");
+  return internal::parse_mesh(file.text(), extension_of(path), "'" + path + "'", seams);
 }
 
 } // namespace rsr_io
