@@ -127,16 +127,18 @@ inline Soup_values soup_values(const rsr_io::Polygon_soup& soup)
   return values;
 }
 
-/// The soup's vertex colours and texture coordinates on `input.mesh`; UVs that are
-/// not one per vertex are dropped (counted in `input`, reported once the output is
-/// written by report_dropped_uvs(): a run that fails says only why). A mesh the
-/// repair did not change has the used points as vertices, in order, even where two
-/// are at one position (--strict keeps them apart): vertex k takes the k-th's values.
+/// Whether the vertices of `input.mesh` are the soup's used points, in order: the
+/// repair did not change the mesh.
 inline bool vertices_as_in_file(const Soup_values& values, const Input& input)
 {
   return !input.repairs.repaired() && num_vertices(input.mesh) == values.used.size();
 }
 
+/// The soup's vertex colours and texture coordinates on `input.mesh`; UVs that are
+/// not one per vertex are dropped (counted in `input`, reported once the output is
+/// written by report_dropped_uvs(): a run that fails says only why). A mesh the
+/// repair did not change has the used points as vertices, in order, even where two
+/// are at one position (--strict keeps them apart): vertex k takes the k-th's values.
 inline void add_vertex_values(const rsr_io::Polygon_soup& soup, const Soup_values& values, Input& input)
 {
   const bool as_in_file = vertices_as_in_file(values, input);
@@ -161,9 +163,9 @@ inline void add_vertex_values(const rsr_io::Polygon_soup& soup, const Soup_value
     }, "v:uv", input.mesh);
 }
 
-/// The triangles of the soup's polygons, if the file has points at one position with
-/// different colours or UVs (a seam the repair's merge would blur): taken before the
-/// repair, which renumbers the polygons.
+/// The polygons at each of the soup's positions, if the file has points at one position
+/// with different colours or UVs (a seam the repair's merge would blur): taken before
+/// the repair, which renumbers the polygons.
 inline std::optional<Corner_points> seam_corners(const rsr_io::Polygon_soup& soup, const Soup_values& values)
 {
   const Seam_values seam_values(soup);
@@ -180,15 +182,14 @@ inline void open_seams(const rsr_io::Polygon_soup& soup, const Soup_values& valu
 {
   if(!corners || vertices_as_in_file(values, input))
     return;
-  const Seam_values seam_values(soup);
+  const bool closed = CGAL::is_closed(input.mesh);
+  Seam_values seam_values(soup);
+  seam_values.uvs = seam_values.uvs && closed; // with a border, add_vertex_values() dropped them
   const Attribute_seams seams = find_attribute_seams(seam_values, *corners, input.mesh);
   if(seams.edges == 0)
     return;
-  if(!CGAL::is_closed(input.mesh)) { // the colours are blended; the UVs are dropped (add_vertex_values())
-    Seam_values colors = seam_values;
-    colors.uvs = false;
-    if(colors.colors)
-      input.blended_seam_edges = find_attribute_seams(colors, *corners, input.mesh).edges;
+  if(!closed) { // the colours are blended across
+    input.blended_seam_edges = seams.edges;
     return;
   }
   input.mesh = open_attribute_seams(input.mesh, seams, seam_values, values.point_at, sharp_angle);
