@@ -242,6 +242,45 @@ void test_error_kinds(const Mesh& sphere)
             Kind::BAD_PARAMETER));
 }
 
+/// A mesh far from the origin (a scan in georeferenced coordinates): with the default
+/// grid origin, 5e9 cells lie between it and the mesh, beyond the lattice's 2^29; the
+/// origin moves next to the mesh, on the same lattice, so that the far sphere gives
+/// the near one's remesh. A grid origin given that far is refused.
+void test_far_from_origin()
+{
+  using Kind = RSR::Remeshing_error::Kind;
+  const double offset = 1e8;
+  const Mesh near = make_sphere(1.0, 3);
+  const Mesh far = make_sphere(1.0, 3, Point(offset, offset, offset));
+  const auto np = RSR::parameters::grid_spacing(0.02);
+  Mesh near_out, far_out;
+  RSR::primal_remesh(near, near_out, np);
+  bool refused = false;
+  try {
+    RSR::primal_remesh(far, far_out, np);
+  } catch(const RSR::Remeshing_error& error) {
+    std::cout << "far sphere refused: " << error.what() << std::endl;
+    refused = true;
+  }
+  CHECK(!refused);
+  const double n_near = double(num_vertices(near_out)), n_far = double(num_vertices(far_out));
+  std::cout << "sphere at the origin: " << n_near << " primal vertices; at 1e8: " << n_far << std::endl;
+  CHECK(n_near > 1000 && std::abs(n_far - n_near) <= 0.01 * n_near);
+  CHECK(CGAL::is_valid_polygon_mesh(far_out));
+  double off_sphere = 0;
+  for(auto v : vertices(far_out)) {
+    const Point& p = far_out.point(v);
+    const double r = std::sqrt(CGAL::square(p.x() - offset) + CGAL::square(p.y() - offset) + CGAL::square(p.z() - offset));
+    off_sphere = (std::max)(off_sphere, std::abs(r - 1));
+  }
+  CHECK(off_sphere < 0.01); // the input's flat faces are within 0.01 of the sphere
+  Mesh quads;
+  RSR::remesh(far, quads);
+  CHECK(num_faces(quads) > 100);
+  const std::array<double, 3> origin = {{0, 0, 0}};
+  CHECK(throws_kind([&] { RSR::primal_remesh(far, far_out, np.grid_origin(origin)); }, Kind::OUTPUT_TOO_LARGE));
+}
+
 /// Counts out of their domain are refused before any work (the visitor is never called):
 /// a negative count converted to an unsigned one, or a target the cap forbids, would
 /// otherwise start a search that cannot end well.
@@ -316,6 +355,7 @@ int main(int argc, char** argv)
   test_progress(elephant);
   test_cancel(elephant);
   test_error_kinds(sphere);
+  test_far_from_origin();
   test_bad_counts(sphere);
   test_same_mesh(sphere);
   return report("test_parameters");

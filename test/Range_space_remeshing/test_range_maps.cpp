@@ -426,10 +426,11 @@ void check_primal_normals_on_creases(const Mesh& creased)
 }
 
 /// Vertex normals of meshes at extreme scales: unit, or zero where there is no normal,
-/// never NaN (the squared length of 1e200 or 1e-200 vectors over- or underflows).
+/// never NaN (the squared length of 1e200 or 1e-200 vectors over- or underflows; at
+/// 1e-310, subnormal, the unit-size scale factor 1 / 1e-310 itself overflows).
 void test_extreme_normals()
 {
-  for(double scale : {1e-200, 1e-100, 1.0, 1e100, 1e200}) {
+  for(double scale : {1e-310, 1e-300, 1e-200, 1e-100, 1.0, 1e100, 1e200}) {
     Mesh sphere = make_sphere(1.0, 2);
     for(auto v : vertices(sphere))
       sphere.point(v) = Point(scale * sphere.point(v).x(), scale * sphere.point(v).y(), scale * sphere.point(v).z());

@@ -201,8 +201,56 @@ void test_broken_structure()
 
 } // namespace
 
+/// The largest deviation of the points of `quads`, scaled by 2^-exponent, from the unit
+/// sphere; infinite if one is not finite.
+double off_unit_sphere(const Mesh& quads, int exponent)
+{
+  double worst = 0;
+  for(auto v : vertices(quads)) {
+    const Point& p = quads.point(v);
+    const double x = std::ldexp(p.x(), -exponent), y = std::ldexp(p.y(), -exponent), z = std::ldexp(p.z(), -exponent);
+    const double r = std::sqrt(x * x + y * y + z * z);
+    worst = std::isfinite(r) ? (std::max)(worst, std::abs(r - 1)) : std::numeric_limits<double>::infinity();
+  }
+  return worst;
+}
+
+/// remesh() on a sphere scaled by powers of two from 2^-1040 (subnormal coordinates)
+/// to 2^1020: the stages after the primal square lengths, which overflow near 1e300
+/// and underflow near 1e-300 (the dual's points were NaN, or a precondition failed).
+/// Each gives about the unit sphere's remesh, scaled.
+void test_extreme_scales()
+{
+  const Mesh unit = make_sphere(1.0, 2);
+  Mesh unit_quads;
+  RSR::remesh(unit, unit_quads, params::grid_spacing(0.1));
+  const double unit_off = off_unit_sphere(unit_quads, 0);
+  for(int exponent : {-1040, -996, 996, 1020}) {
+    Mesh scaled = unit;
+    for(auto v : vertices(scaled)) {
+      const Point& p = unit.point(v);
+      scaled.point(v) = Point(std::ldexp(p.x(), exponent), std::ldexp(p.y(), exponent), std::ldexp(p.z(), exponent));
+    }
+    Mesh quads;
+    try {
+      RSR::remesh(scaled, quads, params::grid_spacing(std::ldexp(0.1, exponent)));
+    } catch(const std::exception& error) {
+      std::cout << "sphere scaled by 2^" << exponent << ": " << error.what() << std::endl;
+    }
+    const double off = off_unit_sphere(quads, exponent);
+    std::cout << "sphere scaled by 2^" << exponent << ": " << num_vertices(quads) << " vertices (unit sphere "
+              << num_vertices(unit_quads) << "), off the unit sphere by " << off << " (unit sphere " << unit_off
+              << ")" << std::endl;
+    CHECK(std::abs(double(num_vertices(quads)) - double(num_vertices(unit_quads))) <=
+          0.02 * double(num_vertices(unit_quads)));
+    CHECK(off <= unit_off + 1e-6);
+    CHECK(CGAL::is_valid_polygon_mesh(quads));
+  }
+}
+
 int main()
 {
+  test_extreme_scales();
   test_snapped_meshes();
   test_voxel_terrains();
   test_flat_pillow();

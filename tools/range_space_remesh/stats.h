@@ -161,7 +161,7 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                   {"output", s.time_output_ms},   {"dual", all.dual.time_ms},
                   {"all_quads", all.all_quads.time_ms}, {"collapse", all.collapse.time_ms},
                   {"relaxation", all.time_relaxation_ms},
-                  {"untangle", all.untangle.time_ms},
+                  {"untangle", all.untangle.time_ms}, {"attributes", all.time_attributes_ms},
                   {"total", all.time_total_ms},   {"write", io.write_ms}};
   std::cout << j.dump(-1, ' ', false, error_handler) << std::endl;
 }

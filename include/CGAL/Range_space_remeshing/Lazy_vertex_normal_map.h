@@ -90,28 +90,17 @@ public:
 private:
   value_type normal(key_type v) const
   {
-    const internal::Vec3 sum = weighted_sum(v, 1.);
-    const internal::Vec3 unit = internal::normalized(sum);
-    if(unit[0] != 0 || unit[1] != 0 || unit[2] != 0)
-      return unit;
-    // Nothing, or an overflow: with coordinates near 1e-200 or 1e200 the cross
-    // products under- or overflow. Both weightings are scale-invariant in direction:
-    // retry with the star scaled to unit size (rare, so the common case pays nothing).
-    const double largest = internal::star_extent(v, *tm_, vpm_);
-    return largest > 0 && std::isfinite(largest) ? internal::normalized(weighted_sum(v, 1. / largest)) : unit;
+    return internal::unit_vertex_normal(v, *tm_, vpm_, [&](int exponent) { return weighted_sum(v, exponent); });
   }
 
-  /// The sum of the faces' normals around v, weighted, with the star scaled by `scale`.
-  internal::Vec3 weighted_sum(key_type v, double scale) const
+  /// The sum of the faces' normals around v, weighted, with the star scaled by 2^exponent.
+  internal::Vec3 weighted_sum(key_type v, int exponent) const
   {
     using internal::Vec3;
     Vec3 sum = {{0, 0, 0}};
     const Vec3 p = internal::to_vec3(get(vpm_, v));
     auto edge_to = [&](auto w) {
-      Vec3 d = internal::difference(internal::to_vec3(get(vpm_, w)), p);
-      for(double& x : d)
-        x *= scale;
-      return d;
+      return internal::scaled_by_power_of_two(internal::difference(internal::to_vec3(get(vpm_, w)), p), exponent);
     };
     for(auto h : CGAL::halfedges_around_target(v, *tm_)) {
       if(is_border(h, *tm_))
@@ -152,9 +141,9 @@ writes into `normals` the unit normal of every vertex of `tm`, the one
 For the complete scan of a mesh, which maps every vertex anyway, this is the cheaper
 way to feed a normal-based range map (`Position_normal_range_map`,
 `Position_normal_color_range_map`, `Gauss_range_map`): the lazy map reads each vertex's
-star on its own, scattered in memory, and on refined_elephant (44,460 vertices)
-that made it about ten times slower than this pass (1 ms). The lazy map keeps the
-seeded traversal sublinear: use it there.
+star on its own, scattered in memory, which makes it several times slower than this
+pass when every vertex is read. The lazy map keeps the seeded traversal sublinear: use
+it there.
 
 \tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph`.
 \tparam VertexNormalMap a writable property map, vertex -> `std::array<double, 3>` or a

@@ -113,15 +113,16 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
     \cgalParamNBegin{grid_origin}
       \cgalParamDescription{a grid vertex}
       \cgalParamType{`std::array<double, D>`}
-      \cgalParamDefault{the origin}
+      \cgalParamDefault{the origin; where f lies more than 2^29 cells from it (a scan in
+                        georeferenced coordinates), the grid vertex of that grid at or below the
+                        lowest corner of f's bounding box}
     \cgalParamNEnd
     \cgalParamNBegin{seeding_method}
       \cgalParamDescription{`Seeding_method::COMPLETE_SCAN` (finds every piece, linear) or
                             `Seeding_method::SEEDED` (sublinear from given `seed_faces`;
                             without them, the search for one face per connected component
                             is a pass over the whole connectivity, which on a huge input
-                            costs more than the complete scan: 760 against 430 ms on
-                            5.7 million triangles, 260 ms from given seeds)}
+                            costs more than the complete scan itself)}
       \cgalParamDefault{`Seeding_method::COMPLETE_SCAN`}
     \cgalParamNEnd
     \cgalParamNBegin{seed_faces}
@@ -218,7 +219,7 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
 
 \returns what the run did, including per-stage times.
 \throws Remeshing_error on an empty mesh, a non-triangle face, a non-finite map value or cell size, a cell size so small that
-  range coordinates exceed 2^29 cells, or when the output cap would be exceeded (also
+  the mapped input spans more than 2^29 cells (or lies that far from a given `grid_origin`), or when the output cap would be exceeded (also
   while `preserve_topology` refines the cell size), or with `preserve_topology` in the
   seeded mode; of kind `BAD_PARAMETER` if `out` is `tm`, or if `maximum_number` or
   `number_of_target_vertices` is negative or not whole, or the target is above the cap.

@@ -29,8 +29,8 @@ struct Levels_hash
   }
 };
 
-/// Whether two cells are the same, by an inlined loop: std::array's == became a
-/// call to memcmp, which the topology check made on every edge of the input.
+/// Whether two cells are the same. An inlined loop, because std::array's == may
+/// compile to a call to memcmp, and the topology check compares cells on every edge.
 template <class Levels>
 inline bool same_levels(const Levels& a, const Levels& b)
 {

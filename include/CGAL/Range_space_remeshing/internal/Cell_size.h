@@ -28,12 +28,12 @@ namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
 
-/// `default_relative_cell_size` times the diagonal of the bounding box of f over the
-/// vertices on a face (an isolated vertex is never mapped by the remesh).
-template <class TriangleMesh, class RangeMap>
-double default_cell_size(const TriangleMesh& tm, const RangeMap& range_map)
+/// The bounding box (lowest and highest coordinates) of f over the vertices on a face
+/// (an isolated vertex is never mapped by the remesh); empty (infinite, low above high)
+/// if there is none.
+template <int D, class TriangleMesh, class RangeMap>
+std::array<std::array<double, D>, 2> mapped_bounding_box(const TriangleMesh& tm, const RangeMap& range_map)
 {
-  constexpr int D = range_dimension<RangeMap>();
   std::array<double, D> low, high;
   low.fill(std::numeric_limits<double>::infinity());
   high.fill(-std::numeric_limits<double>::infinity());
@@ -48,6 +48,38 @@ double default_cell_size(const TriangleMesh& tm, const RangeMap& range_map)
       high[q] = (std::max)(high[q], double(x[q]));
     }
   }
+  return {{low, high}};
+}
+
+/// The grid origin where the default one (the origin) is more than 2^29 cells of size
+/// h from the mapped input: the lattice point of that grid at or below the lowest
+/// corner of its bounding box, so that the cells are (up to rounding) those of the
+/// default grid. The
+/// origin if that point is not finite.
+template <class Point_d, class TriangleMesh, class RangeMap>
+Point_d lattice_point_below(const TriangleMesh& tm, const RangeMap& range_map, double h)
+{
+  constexpr int D = range_dimension<RangeMap>();
+  const std::array<double, D> low = mapped_bounding_box<D>(tm, range_map)[0];
+  Point_d corner{};
+  for(int q = 0; q < D; ++q) {
+    const double x = std::floor(low[q] / h) * h;
+    if(!std::isfinite(x))
+      return Point_d{};
+    corner[q] = x;
+  }
+  return corner;
+}
+
+/// `default_relative_cell_size` times the diagonal of the bounding box of f over the
+/// vertices on a face.
+template <class TriangleMesh, class RangeMap>
+double default_cell_size(const TriangleMesh& tm, const RangeMap& range_map)
+{
+  constexpr int D = range_dimension<RangeMap>();
+  const auto box = mapped_bounding_box<D>(tm, range_map);
+  const std::array<double, D>& low = box[0];
+  const std::array<double, D>& high = box[1];
   // the diagonal, scaled by the longest side: the squares of huge or tiny sides would
   // overflow or underflow; and in halves where a side is beyond doubles (-1e308 to 1e308)
   bool halves = false;

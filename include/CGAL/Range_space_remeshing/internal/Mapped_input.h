@@ -41,6 +41,18 @@ namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
 
+/// The refusal of a range coordinate beyond the lattice's 32-bit levels, of its own
+/// type so that `primal_remesh_at()` can move a default grid origin next to the input
+/// and try again (a scan in georeferenced coordinates lies 1e6 or more from the origin).
+struct Lattice_overflow : Remeshing_error
+{
+  Lattice_overflow()
+    : Remeshing_error("the cell size is too small for the range of the map: more than 2^29 cells along one axis "
+                      "from the grid origin",
+                      Kind::OUTPUT_TOO_LARGE)
+  {}
+};
+
 /// Throws `Error(message())`, with the message built here, out of line: built where the
 /// input is checked, once per face, it made the checking functions too big to inline.
 template <class Error, class Message>
@@ -338,9 +350,7 @@ private:
   {
     if(!std::isfinite(value))
       throw Remeshing_error("the range map gives a NaN or infinite value at input vertex " + std::to_string(id));
-    throw Remeshing_error("the cell size is too small for the range of the map: "
-                          "more than 2^29 cells along one axis",
-                          Remeshing_error::Kind::OUTPUT_TOO_LARGE);
+    throw Lattice_overflow();
   }
 
   /// Fills the record of a face: the only entry it writes (any thread).

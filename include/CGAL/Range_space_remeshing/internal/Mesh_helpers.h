@@ -59,19 +59,24 @@ std::size_t index_bound(const Range& range, IndexMap index)
   return bound;
 }
 
+/// x multiplied by 2^exponent, exactly where the result is a normal number (the
+/// factor itself may be beyond doubles: 2^1070 brings subnormal offsets to unit size).
+inline Vec3 scaled_by_power_of_two(Vec3 x, int exponent)
+{
+  if(exponent != 0)
+    for(double& c : x)
+      c = std::ldexp(c, exponent);
+  return x;
+}
+
 /// The sum of the Newell area vectors of the faces around v, with the coordinates
-/// taken relative to v and multiplied by `scale`.
+/// taken relative to v and multiplied by 2^exponent.
 template <class PolygonMesh, class VertexPointMap>
 Vec3 sum_of_face_areas(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v, const PolygonMesh& mesh,
-                       VertexPointMap vpm, double scale)
+                       VertexPointMap vpm, int exponent)
 {
   const Vec3 origin = to_vec3(get(vpm, v));
-  auto local = [&](auto w) {
-    Vec3 x = difference(to_vec3(get(vpm, w)), origin);
-    for(double& c : x)
-      c *= scale;
-    return x;
-  };
+  auto local = [&](auto w) { return scaled_by_power_of_two(difference(to_vec3(get(vpm, w)), origin), exponent); };
   Vec3 sum = {{0, 0, 0}};
   for(auto h : CGAL::halfedges_around_target(halfedge(v, mesh), mesh)) {
     if(is_border(h, mesh))
@@ -128,22 +133,32 @@ void walk_component(typename boost::graph_traits<PolygonMesh>::face_descriptor s
   }
 }
 
-/// The unit normal of vertex v: the sum of its faces' area vectors (Newell's, so that
-/// polygons are welcome), normalised; zero if they all vanish. Not CGAL's
-/// `compute_vertex_normal()`: its visibility-maximising normal cost more than half of
-/// the contouring time when the output asks for normals, and its circumcentre
-/// construction asserts on underflowing coordinates (found by the fuzzer). Where the
-/// sum under- or overflows (coordinates near 1e-200 or 1e200), the star is scaled to
-/// unit size and summed again: the direction does not depend on the scale.
+/// The one way a vertex normal is made: `star_sum(e)` sums the faces' weighted normals
+/// around v with the star scaled by 2^e (the direction does not depend on e), and the
+/// sum is normalised; zero if it vanishes. Where it under- or overflows (coordinates
+/// near 1e-200 or 1e200, or subnormal), the star is scaled to unit size and summed
+/// again (rare, so the common case pays nothing).
+template <class PolygonMesh, class VertexPointMap, class StarSum>
+Vec3 unit_vertex_normal(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v, const PolygonMesh& mesh,
+                        VertexPointMap vpm, const StarSum& star_sum)
+{
+  const Vec3 unit = normalized(star_sum(0));
+  if(unit[0] != 0 || unit[1] != 0 || unit[2] != 0)
+    return unit;
+  const double largest = star_extent(v, mesh, vpm);
+  return largest > 0 && std::isfinite(largest) ? normalized(star_sum(-std::ilogb(largest))) : unit;
+}
+
+/// The unit normal of vertex v of a polygon mesh: the sum of its faces' area vectors
+/// (Newell's, which on a triangle is the area vector `Lazy_vertex_normal_map` sums).
+/// Not CGAL's `compute_vertex_normal()`: its visibility-maximising normal is much dearer
+/// than the contouring when the output asks for normals, and its circumcentre
+/// construction asserts on underflowing coordinates (found by the fuzzer).
 template <class PolygonMesh, class VertexPointMap>
 Vec3 area_weighted_vertex_normal(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
                                  const PolygonMesh& mesh, VertexPointMap vpm)
 {
-  const Vec3 unit = normalized(sum_of_face_areas(v, mesh, vpm, 1.));
-  if(unit[0] != 0 || unit[1] != 0 || unit[2] != 0)
-    return unit;
-  const double largest = star_extent(v, mesh, vpm);
-  return largest > 0 && std::isfinite(largest) ? normalized(sum_of_face_areas(v, mesh, vpm, 1. / largest)) : unit;
+  return unit_vertex_normal(v, mesh, vpm, [&](int exponent) { return sum_of_face_areas(v, mesh, vpm, exponent); });
 }
 
 /// The tangent planes of a mesh that comes without any (one it did not produce): for

@@ -16,6 +16,7 @@
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Topology_defect.h>
 #include <CGAL/Range_space_remeshing/parameters.h>
+#include <CGAL/Range_space_remeshing/internal/Cell_size.h>
 #include <CGAL/Range_space_remeshing/internal/Grid_tracer.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_output.h>
@@ -240,8 +241,9 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
   const Traits traits = choose_parameter<Traits>(get_parameter(np_in, CGAL::internal_np::geom_traits));
   using Point_d = typename Traits::Point_d;
 
-  const Point_d origin = choose_parameter(get_parameter(np_in, internal_np::grid_origin), Point_d{});
+  Point_d origin = choose_parameter(get_parameter(np_in, internal_np::grid_origin), Point_d{});
   check_grid(cell_size, origin);
+  bool may_move_origin = CGAL::parameters::is_default_parameter<NamedParametersIn, internal_np::grid_origin_t>::value;
   const Primal_run_options options = primal_run_options(np_in);
   const auto visitor =
       choose_parameter(get_parameter(np_in, internal_np::topology_visitor), No_topology_visitor());
@@ -253,7 +255,7 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
 
   double h = cell_size;
-  for(std::size_t refinements = 0;; ++refinements) {
+  for(std::size_t refinements = 0;;) {
     start = std::chrono::steady_clock::now();
     try {
       Tracer tracer(tm, range_map, face_index, vertex_index, origin, h, options.maximum_vertices, traits);
@@ -272,6 +274,7 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
           throw Remeshing_error("defects remain at every cell size tried",
                                 Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
         h *= topology_refinement_factor;
+        ++refinements;
         continue;
       }
       for(const auto& defect : defects)
@@ -285,6 +288,15 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
       stats.time_total_ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_total).count();
       return stats;
+    } catch(const Lattice_overflow& error) {
+      if(may_move_origin) { // once, to the input: the same cells, fewer of them from it
+        may_move_origin = false;
+        origin = lattice_point_below<Point_d>(tm, range_map, h);
+        continue;
+      }
+      if(refinements == 0)
+        throw;
+      throw refinement_failure(error, refinements, h);
     } catch(const Remeshing_error& error) {
       if(refinements == 0 || error.kind() == Remeshing_error::Kind::CANCELLED)
         throw; // as it is: a Remeshing_cancelled stays one
