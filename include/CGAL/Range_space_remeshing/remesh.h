@@ -97,44 +97,11 @@ Quad_improvement quad_improvement_of(const NamedParameters& np)
   return improvement;
 }
 
-/// Records, where the output has vertex attributes to sample, the primal vertices with
-/// the input faces they were traced in (`seeds`): the inspector of `primal_remesh_at()`
-/// finds the faces, in the order the output writes the vertices, and `add_points()`
-/// then takes their points from the written primal.
-template <class TriangleMesh>
-struct Seed_recorder
-{
-  Sampling_seeds<TriangleMesh>* seeds; // null: nothing to sample
-
-  template <class Tracer, class Complex>
-  void operator()(Tracer& tracer, const Complex& complex) const
-  {
-    if(seeds == nullptr)
-      return;
-    seeds->clear();
-    const auto& vertices = tracer.intersection_vertices();
-    for(std::uint32_t v = 0; v < vertices.size(); ++v)
-      if(complex.is_kept(v))
-        seeds->faces.push_back(tracer.input().face_of_id(vertices[v].face_id));
-  }
-
-  template <class Primal>
-  void add_points(const Primal& primal) const
-  {
-    if(seeds == nullptr)
-      return;
-    CGAL_assertion(seeds->faces.size() == num_vertices(primal));
-    for(auto v : vertices(primal))
-      seeds->points.push_back(to_vec3(primal.point(v)));
-  }
-};
-
-/// One run of the pipeline at cell size `h`, into `quads` (empty); the primal's
-/// vertices go to `seeds` if it is not null.
+/// One run of the pipeline at cell size `h`, into `quads` (empty).
 template <class ConcurrencyTag, class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
 Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, const NamedParameters& np,
                             const NamedParametersOut& np_out, const Quad_improvement& improvement,
-                            const Progress& progress, Sampling_seeds<TriangleMesh>* seeds)
+                            const Progress& progress)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -184,9 +151,7 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
   };
   // The primal remesh, and whether it has faces.
   auto remesh_primal = [&](const auto& np_primal_out) {
-    const Seed_recorder<TriangleMesh> recorder{seeds};
-    stats.primal = primal_remesh_at(h, tm, primal, np, np_primal_out, recorder, progress, ConcurrencyTag());
-    recorder.add_points(primal);
+    stats.primal = primal_remesh_at(h, tm, primal, np, np_primal_out, No_inspection(), progress, ConcurrencyTag());
     frame = Working_frame::of(primal, primal.points());
     frame.move_into(primal, primal.points());
     planes_pool.decompositions.reserve(num_faces(primal)); // one per dual vertex of a face
@@ -224,12 +189,11 @@ inline bool dual_lost_topology(const Dual_statistics& dual)
 template <class ConcurrencyTag, class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
 Remesh_statistics remesh_keeping_topology(double h, const TriangleMesh& tm, QuadMesh& quads,
                                           const NamedParameters& np, const NamedParametersOut& np_out,
-                                          const Quad_improvement& improvement, const Progress& progress,
-                                          Sampling_seeds<TriangleMesh>* seeds)
+                                          const Quad_improvement& improvement, const Progress& progress)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  Remesh_statistics stats = remesh_at<ConcurrencyTag>(h, tm, quads, np, np_out, improvement, progress, seeds);
+  Remesh_statistics stats = remesh_at<ConcurrencyTag>(h, tm, quads, np, np_out, improvement, progress);
   if(!choose_parameter(get_parameter(np, internal_np::preserve_topology), false))
     return stats;
   for(int refinement = 0; dual_lost_topology(stats.dual); ++refinement) {
@@ -239,7 +203,7 @@ Remesh_statistics remesh_keeping_topology(double h, const TriangleMesh& tm, Quad
     remove_all_elements(quads);
     const std::size_t earlier_refinements = stats.primal.topology_refinements + 1; // and this one
     stats = remesh_at<ConcurrencyTag>(stats.primal.cell_size * dual_refinement_factor, tm, quads, np, np_out,
-                                      improvement, progress, seeds);
+                                      improvement, progress);
     stats.primal.topology_refinements += earlier_refinements;
   }
   return stats;
@@ -254,8 +218,7 @@ namespace internal {
 /// final points (see Attribute_resampling.h). Returns the time taken, in ms.
 template <class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
 double sample_vertex_attributes(const TriangleMesh& tm, const QuadMesh& quads, const NamedParameters& np,
-                                const NamedParametersOut& np_out, const Sampling_seeds<TriangleMesh>& seeds,
-                                const Progress& progress)
+                                const NamedParametersOut& np_out, const Progress& progress)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -270,7 +233,7 @@ double sample_vertex_attributes(const TriangleMesh& tm, const QuadMesh& quads, c
                                         quads,
                                         choose_parameter(get_parameter(np_out, CGAL::internal_np::vertex_point),
                                                          get_const_property_map(CGAL::vertex_point, quads)),
-                                        attributes, seeds, progress);
+                                        attributes, progress);
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
 }
@@ -301,23 +264,18 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
   improvement.untangle_near_target = target;
   check_vertex_attributes(tm, np, np_out);
   remove_all_elements(quads);
-  // the last run's primal vertices, if there are attributes to sample (the last run gives the output)
-  Sampling_seeds<TriangleMesh> seeds;
-  Sampling_seeds<TriangleMesh>* const seeds_of_run =
-      std::decay_t<decltype(vertex_attributes_of(np, np_out))>::empty ? nullptr : &seeds;
   return emptied_on_cancel(quads, [&] {
     const double h = cell_size_of(tm, np);
     Remesh_statistics stats;
     if(target == 0)
-      stats = remesh_keeping_topology<ConcurrencyTag>(h, tm, quads, np, np_out, improvement, progress, seeds_of_run);
+      stats = remesh_keeping_topology<ConcurrencyTag>(h, tm, quads, np, np_out, improvement, progress);
     else
       search_cell_size(h, target, [&](double h_try) {
         remove_all_elements(quads);
-        stats = remesh_keeping_topology<ConcurrencyTag>(h_try, tm, quads, np, np_out, improvement, progress,
-                                                        seeds_of_run);
+        stats = remesh_keeping_topology<ConcurrencyTag>(h_try, tm, quads, np, np_out, improvement, progress);
         return std::size_t(num_vertices(quads));
       }, CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::preserve_topology), false));
-    stats.time_attributes_ms = sample_vertex_attributes(tm, quads, np, np_out, seeds, progress);
+    stats.time_attributes_ms = sample_vertex_attributes(tm, quads, np, np_out, progress);
     stats.time_total_ms += stats.time_attributes_ms;
     return stats;
   });

@@ -10,33 +10,30 @@
 // collapse, the relaxation and the untangling move the vertices after the dual gave
 // them the mean of their primal face's values, by up to about a cell, so a texture's
 // lines would waver. Each output vertex takes the values at the nearest point of the
-// input around where it came from (a local search from the nearest primal vertex).
+// input (CGAL's AABB tree finds it and its face).
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
-#include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Vec3.h>
 #include <CGAL/Range_space_remeshing/internal/Vertex_attributes.h>
 
-#include <CGAL/Orthogonal_k_neighbor_search.h>
-#include <CGAL/Search_traits_3.h>
-#include <CGAL/Search_traits_adapter.h>
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/version.h>
+#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
+#include <CGAL/AABB_segment_primitive_3.h>
+#include <CGAL/AABB_traits_3.h>
+#else
+#include <CGAL/AABB_segment_primitive.h>
+#include <CGAL/AABB_traits.h>
+#endif
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/boost/graph/helpers.h>
-#include <CGAL/boost/graph/iterator.h>
-#include <CGAL/property_map.h>
-
-#include <boost/iterator/counting_iterator.hpp>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cmath>
-#include <cstdint>
-#include <functional>
 #include <limits>
-#include <memory>
-#include <queue>
 #include <utility>
 #include <vector>
 
@@ -225,63 +222,71 @@ void check_attributes_can_be_sampled(const TriangleMesh& tm, VertexPointMap vpm)
   check_scale_range(tm, scaled_point_map(tm, vpm));
 }
 
-/// Points of the input, each with the input face it lies on: where the search for an
-/// output vertex's nearest point starts. remesh() takes the primal vertices, each on
-/// the face it was traced in, so that every output vertex has one within about a cell.
-template <class TriangleMesh>
-struct Sampling_seeds
+/// The faces of `tm` split by whether they have an area at the points of `vpm` (the
+/// scaled points). A face without area (a crease's copies, a split edge's corners on one
+/// line, a part flat at the scale of doubles: a tetrahedron 1e-80 thick) is searched as
+/// its longest side: CGAL's nearest point on it in doubles was 0 / 0, and leaving it out
+/// gave a part made only of such faces the values of another.
+template <class TriangleMesh, class PointMap>
+struct Searched_faces
 {
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+  using Segment = typename CGAL::Simple_cartesian<double>::Segment_3;
 
-  std::vector<Vec3> points;
-  std::vector<face_descriptor> faces;
+  std::vector<face_descriptor> with_area;
+  std::vector<face_descriptor> flat;
+  std::vector<Segment> longest_sides; // of the faces in `flat`, in their order
 
-  void clear()
+  Searched_faces(const TriangleMesh& tm, const PointMap& vpm)
   {
-    points.clear();
-    faces.clear();
+    for(face_descriptor f : faces(tm)) {
+      const std::array<Vec3, 3> c = corners(f, tm, vpm);
+      const Vec3 n = cross(difference(c[1], c[0]), difference(c[2], c[0]));
+      if(n[0] != 0 || n[1] != 0 || n[2] != 0) {
+        with_area.push_back(f);
+        continue;
+      }
+      flat.push_back(f);
+      longest_sides.push_back(longest_side(c));
+    }
+  }
+
+  static std::array<Vec3, 3> corners(face_descriptor f, const TriangleMesh& tm, const PointMap& vpm)
+  {
+    const auto h = halfedge(f, tm);
+    return {{to_vec3(get(vpm, source(h, tm))), to_vec3(get(vpm, target(h, tm))),
+             to_vec3(get(vpm, target(next(h, tm), tm)))}};
+  }
+
+  static Segment longest_side(const std::array<Vec3, 3>& c)
+  {
+    const std::size_t from = longest_side_start(c);
+    const Vec3& a = c[from];
+    const Vec3& b = c[(from + 1) % 3];
+    using Point = typename CGAL::Simple_cartesian<double>::Point_3;
+    return Segment(Point(a[0], a[1], a[2]), Point(b[0], b[1], b[2]));
   }
 };
 
-/// The nearest point of the input to a query near the surface, and the input face it
-/// lies on, found by a walk over the faces from the face of the query's nearest seed:
-/// best first (nearest face first), through the faces that meet the ball around the
-/// query of twice the distance to the nearest point found so far (the seed's at
-/// first). The point found and the nearest one lie in the ball of half that radius;
-/// the surface between them may bulge out of that one, across a crease. A local
-/// search, where one over all faces (CGAL's AABB tree) visits every face whose box
-/// holds the query, which on a fan of long thin triangles (a CAD export's flat face)
-/// is nearly all of them; and local on purpose: a vertex takes the values of the part
-/// of the surface it came from, not those of another sheet that passes nearer (the far
-/// side of a thin plate). A face without area (a crease's copies, a split edge's corners
-/// on one line, a part flat at the scale of doubles: a tetrahedron 1e-80 thick) is met as
-/// its longest side, whose nearest point is well defined where the triangle's is 0 / 0.
+/// The nearest point of the input to a query and the input face it lies on, from the
+/// trees of the faces with an area and of the longest sides of those without.
 template <class TriangleMesh, class PointMap>
 class Nearest_face_search
 {
   using Kernel = CGAL::Simple_cartesian<double>;
-  using Point = typename Kernel::Point_3;
-  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
-  using Seed_map = typename CGAL::Pointer_property_map<Point>::type;
-  using Seed_traits = CGAL::Search_traits_adapter<std::size_t, Seed_map, CGAL::Search_traits_3<Kernel>>;
-  using Seed_distance =
-      CGAL::Distance_adapter<std::size_t, Seed_map, CGAL::Euclidean_distance<CGAL::Search_traits_3<Kernel>>>;
-  using Seed_search = CGAL::Orthogonal_k_neighbor_search<Seed_traits, Seed_distance>;
-
-  /// A face met by the walk: its squared distance to the query, its index (which breaks
-  /// ties, so that the result does not depend on the order of the walk) and its nearest point.
-  struct Met
-  {
-    double distance;
-    std::size_t index;
-    face_descriptor face;
-    Point point;
-    bool flat;
-    bool operator>(const Met& other) const
-    {
-      return distance > other.distance || (distance == other.distance && index > other.index);
-    }
-  };
+  using Faces = Searched_faces<TriangleMesh, PointMap>;
+  using face_descriptor = typename Faces::face_descriptor;
+  using Segment_iterator = typename std::vector<typename Faces::Segment>::const_iterator;
+  using Triangle_primitive = CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, PointMap>;
+#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
+  using Segment_primitive = CGAL::AABB_segment_primitive_3<Kernel, Segment_iterator>;
+  using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits_3<Kernel, Triangle_primitive>>;
+  using Segment_tree = CGAL::AABB_tree<CGAL::AABB_traits_3<Kernel, Segment_primitive>>;
+#else
+  using Segment_primitive = CGAL::AABB_segment_primitive<Kernel, Segment_iterator>;
+  using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Triangle_primitive>>;
+  using Segment_tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Segment_primitive>>;
+#endif
 
 public:
   struct Hit
@@ -291,142 +296,63 @@ public:
     bool flat; // the face has no area: weigh along its line
   };
 
-  /// `seeds` lie on `tm` (their points unscaled); `vpm` gives the scaled points.
-  Nearest_face_search(const TriangleMesh& tm, const PointMap& vpm, const Sampling_seeds<TriangleMesh>& seeds)
-    : tm_(tm), vpm_(vpm), seed_faces_(seeds.faces), face_index_(CGAL::get_initialized_face_index_map(tm)),
-      visited_(index_bound(faces(tm), face_index_), 0)
+  Nearest_face_search(const TriangleMesh& tm, const PointMap& vpm) : faces_(tm, vpm)
   {
-    seed_points_.reserve(seeds.points.size());
-    for(const Vec3& p : seeds.points)
-      seed_points_.push_back(vpm(p));
-    if(!seed_points_.empty())
-      seed_tree_ = std::make_unique<typename Seed_search::Tree>(
-          boost::counting_iterator<std::size_t>(0), boost::counting_iterator<std::size_t>(seed_points_.size()),
-          typename Seed_search::Splitter(), Seed_traits(Seed_map(seed_points_.data())));
-  }
-
-  /// The nearest point to q (scaled) and its face; false if there is no seed.
-  bool nearest(const Point& q, Hit& hit)
-  {
-    if(!seed_tree_)
-      return false;
-    const Seed_search search(*seed_tree_, q, 1, 0, true, Seed_distance(Seed_map(seed_points_.data())));
-    const std::size_t seed = search.begin()->first;
-    start_walk();
-    const Met start = meet(seed_faces_[seed], q);
-    Met best = start;
-    queue_.push(start);
-    while(!queue_.empty()) {
-      const Met f = queue_.top();
-      queue_.pop();
-      if(f.distance > 4 * best.distance) // squared: beyond twice the distance
-        break;
-      if(best > f)
-        best = f;
-      for(auto h : CGAL::halfedges_around_face(halfedge(f.face, tm_), tm_)) {
-        const auto o = opposite(h, tm_);
-        if(!is_border(o, tm_) && mark(face(o, tm_)))
-          queue_.push(meet(face(o, tm_), q));
-      }
+    if(!faces_.with_area.empty()) {
+      triangles_.insert(faces_.with_area.begin(), faces_.with_area.end(), tm, vpm);
+      triangles_.accelerate_distance_queries();
     }
-    hit = {best.face, to_vec3(best.point), best.flat};
-    return true;
-  }
-
-private:
-  /// A new walk: no face met yet.
-  void start_walk()
-  {
-    queue_ = decltype(queue_)();
-    if(++stamp_ == 0) { // wrapped: forget every mark
-      std::fill(visited_.begin(), visited_.end(), 0);
-      stamp_ = 1;
+    if(!faces_.flat.empty()) {
+      segments_.insert(faces_.longest_sides.cbegin(), faces_.longest_sides.cend());
+      segments_.accelerate_distance_queries();
     }
   }
 
-  /// Whether f is met for the first time in this walk; it is met from now on.
-  bool mark(face_descriptor f)
+  Hit nearest(const typename Kernel::Point_3& q) const
   {
-    std::uint32_t& stamp = visited_[get(face_index_, f)];
-    if(stamp == stamp_)
-      return false;
-    stamp = stamp_;
-    return true;
-  }
-
-  Met meet(face_descriptor f, const Point& q)
-  {
-    mark(f);
-    Met met;
-    met.face = f;
-    met.index = get(face_index_, f);
-    met.point = nearest_on(f, q, met.flat);
-    met.distance = CGAL::squared_distance(q, met.point);
-    return met;
-  }
-
-  /// The nearest point to q on face f, its longest side if it has no area (`flat`).
-  Point nearest_on(face_descriptor f, const Point& q, bool& flat) const
-  {
-    const std::array<Vec3, 3> c = corners(f, tm_, vpm_);
-    const Vec3 n = cross(difference(c[1], c[0]), difference(c[2], c[0]));
-    flat = n[0] == 0 && n[1] == 0 && n[2] == 0;
-    auto point = [](const Vec3& x) { return Point(x[0], x[1], x[2]); };
-    const Kernel kernel;
-    if(!flat)
-      return kernel.construct_projected_point_3_object()(
-          typename Kernel::Triangle_3(point(c[0]), point(c[1]), point(c[2])), q);
-    const std::size_t from = longest_side_start(c);
-    return kernel.construct_projected_point_3_object()(
-        typename Kernel::Segment_3(point(c[from]), point(c[(from + 1) % 3])), q);
-  }
-
-public:
-  static std::array<Vec3, 3> corners(face_descriptor f, const TriangleMesh& tm, const PointMap& vpm)
-  {
-    const auto h = halfedge(f, tm);
-    return {{to_vec3(get(vpm, source(h, tm))), to_vec3(get(vpm, target(h, tm))),
-             to_vec3(get(vpm, target(next(h, tm), tm)))}};
+    Hit hit{face_descriptor(), Vec3{{0, 0, 0}}, false};
+    double best = std::numeric_limits<double>::infinity();
+    if(!faces_.with_area.empty()) {
+      const auto found = triangles_.closest_point_and_primitive(q);
+      best = CGAL::squared_distance(q, found.first);
+      hit = {found.second, to_vec3(found.first), false};
+    }
+    if(!faces_.flat.empty()) {
+      const auto found = segments_.closest_point_and_primitive(q);
+      if(CGAL::squared_distance(q, found.first) < best)
+        hit = {faces_.flat[std::size_t(found.second - faces_.longest_sides.cbegin())], to_vec3(found.first), true};
+    }
+    return hit;
   }
 
 private:
-  const TriangleMesh& tm_;
-  PointMap vpm_;
-  std::vector<Point> seed_points_;
-  const std::vector<face_descriptor>& seed_faces_;
-  std::unique_ptr<typename Seed_search::Tree> seed_tree_;
-  decltype(CGAL::get_initialized_face_index_map(std::declval<const TriangleMesh&>())) face_index_;
-  std::vector<std::uint32_t> visited_; // by face index: the stamp of the last walk that met it
-  std::uint32_t stamp_ = 0;
-  std::priority_queue<Met, std::vector<Met>, std::greater<Met>> queue_;
+  Faces faces_;
+  Triangle_tree triangles_;
+  Segment_tree segments_;
 };
 
 /// Puts at every vertex of `out` the mix of the attributes' input values at the
-/// nearest point of `tm` (its vertex points `vpm`) to the vertex's point (`out_vpm`),
-/// found from the nearest of `seeds` (see Nearest_face_search). `tm` passed
-/// check_attributes_can_be_sampled().
+/// nearest point of `tm` (its vertex points `vpm`) to the vertex's point (`out_vpm`).
+/// `tm` passed check_attributes_can_be_sampled().
 template <class TriangleMesh, class VertexPointMap, class PolygonMesh, class OutVertexPointMap, class Attributes>
 void sample_attributes_at_nearest_points(const TriangleMesh& tm, VertexPointMap vpm, const PolygonMesh& out,
                                          OutVertexPointMap out_vpm, const Attributes& attributes,
-                                         const Sampling_seeds<TriangleMesh>& seeds, const Progress& progress)
+                                         const Progress& progress)
 {
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Scaled = Scaled_point_map<VertexPointMap>;
-  using Search = Nearest_face_search<TriangleMesh, Scaled>;
   if(faces(tm).empty())
     return;
   const Scaled scaled_vpm = scaled_point_map(tm, vpm);
-  Search search(tm, scaled_vpm, seeds);
+  const Nearest_face_search<TriangleMesh, Scaled> search(tm, scaled_vpm);
   std::array<std::pair<vertex_descriptor, double>, 3> sources;
   std::size_t done = 0;
   for(auto v : vertices(out)) {
     progress.report_every(Remeshing_stage::RELAXATION, done++, num_vertices(out));
-    typename Search::Hit hit;
-    if(!search.nearest(scaled_vpm(to_vec3(get(out_vpm, v))), hit))
-      return; // no seed: the remesh made no vertex
+    const auto hit = search.nearest(scaled_vpm(to_vec3(get(out_vpm, v))));
     const auto h = halfedge(hit.face, tm);
     const std::array<vertex_descriptor, 3> corners = {source(h, tm), target(h, tm), target(next(h, tm), tm)};
-    const std::array<Vec3, 3> at = Search::corners(hit.face, tm, scaled_vpm);
+    const std::array<Vec3, 3> at = Searched_faces<TriangleMesh, Scaled>::corners(hit.face, tm, scaled_vpm);
     const std::array<double, 3> weights = hit.flat ? weights_along_line(hit.point, at) : barycentric_weights(hit.point, at);
     for(int i = 0; i < 3; ++i)
       sources[i] = {corners[i], weights[i]};
