@@ -625,6 +625,14 @@ expect_json(2 output_components)
 expect_json(0 dual_dropped_pieces)
 expect_json(ON topology preserved)
 
+# an octahedron 1e-5 across beside a unit one, on no grid plane of cell 0.05: keeping
+# it needs cells of about 5e-6, far past the cap; --preserve-topology says so after the
+# first run (the old code ran 8 refinements, to the cap), with the way out
+run(2 speck.off --absolute --cell-size 0.05 --max-vertices 1000000 --preserve-topology
+    ${DATA_DIR}/octahedron_with_speck.off speck.off)
+expect_message("at cell size 0.05 \\(0 refinements\\) a part of the input [0-9.e+-]+ across .* is lost.*--max-vertices"
+               "--preserve-topology with a speck")
+
 # ------------------------------------------------------------ output files
 # STL stores triangles: every quad is split, none is half written (the area is
 # checked on reading back in test_file_io)

@@ -281,6 +281,34 @@ void test_far_from_origin()
   CHECK(throws_kind([&] { RSR::primal_remesh(far, far_out, np.grid_origin(origin)); }, Kind::OUTPUT_TOO_LARGE));
 }
 
+/// preserve_topology with a part far too small for the cap (a sphere 1e-5 across beside
+/// a unit one, crossed by two grid planes: a piece the primal drops; and beside it, on
+/// no grid plane: a lost component): refused after the first run, from the part's
+/// extent, not after the refinements up to the cap (11 runs, about half a minute).
+void test_hopeless_refinement()
+{
+  using Kind = RSR::Remeshing_error::Kind;
+  for(const Point& centre : {Point(3.0131, 0, 0), Point(3.0131, 0.0137, 0.0213)}) {
+    Mesh two = make_sphere(1.0, 3);
+    CGAL::copy_face_graph(make_sphere(1e-5, 2, centre), two);
+    std::size_t runs = 0; // entries into the scan: one per run
+    bool in_scan = false;
+    auto count_runs = [&](RSR::Remeshing_stage stage, double) {
+      const bool scan = stage == RSR::Remeshing_stage::SCAN;
+      runs += scan && !in_scan;
+      in_scan = scan;
+      return true;
+    };
+    Mesh out;
+    CHECK(throws_kind([&] {
+      RSR::primal_remesh(two, out, RSR::parameters::grid_spacing(0.05).preserve_topology(true).maximum_number(1000000)
+                                       .progress_visitor(count_runs));
+    }, Kind::TOPOLOGY_NOT_PRESERVED));
+    std::cout << "hopeless refinement at (" << centre << "): " << runs << " runs" << std::endl;
+    CHECK(runs <= 1);
+  }
+}
+
 /// Counts out of their domain are refused before any work (the visitor is never called):
 /// a negative count converted to an unsigned one, or a target the cap forbids, would
 /// otherwise start a search that cannot end well.
@@ -356,6 +384,7 @@ int main(int argc, char** argv)
   test_cancel(elephant);
   test_error_kinds(sphere);
   test_far_from_origin();
+  test_hopeless_refinement();
   test_bad_counts(sphere);
   test_same_mesh(sphere);
   return report("test_parameters");

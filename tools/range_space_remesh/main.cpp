@@ -127,6 +127,19 @@ void check_remesh(const Mesh& output, const RSR::Remesh_statistics& stats)
          "or --output primal");
 }
 
+/// What the user can change after the library refused: appended to its message.
+const char* way_out(RSR::Remeshing_error::Kind kind)
+{
+  switch(kind) {
+  case RSR::Remeshing_error::Kind::OUTPUT_TOO_LARGE:
+    return " (use a larger --cell-size, or raise the cap with --max-vertices)";
+  case RSR::Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED:
+    return " (leave out --preserve-topology to accept the change, or raise the cap with --max-vertices)";
+  default:
+    return "";
+  }
+}
+
 int run_program(int argc, char** argv)
 {
   Options options = parse_arguments(argc, argv);
@@ -195,9 +208,7 @@ int main(int argc, char** argv)
       std::cerr << interrupted_line << std::flush;
       return interrupted_status;
     }
-    const bool capped = e.kind() == RSR::Remeshing_error::Kind::OUTPUT_TOO_LARGE;
-    std::cerr << "range_space_remesh: " << e.what()
-              << (capped ? " (use a larger --cell-size, or raise the cap with --max-vertices)" : "") << std::endl;
+    std::cerr << "range_space_remesh: " << e.what() << way_out(e.kind()) << std::endl;
   } catch(const std::bad_alloc&) {
     std::cerr << "range_space_remesh: out of memory" << std::endl;
   } catch(const std::exception& e) { // one line, whatever the message (CGAL's assertions have several)

@@ -154,7 +154,12 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
                             `Statistics::cell_size`}
       \cgalParamType{bool}
       \cgalParamDefault{`false`}
-      \cgalParamExtra{implies `check_topology`; needs the complete scan}
+      \cgalParamExtra{implies `check_topology`; needs the complete scan. Before each
+                      refinement, the smallest part of the input still lost (a lost
+                      component, or the pieces the primal dropped) says how small the cells
+                      must become, about half its extent in f; a refinement whose output
+                      would then pass four times the cap is refused at once, with that
+                      extent in the message, rather than after the runs up to the cap.}
     \cgalParamNEnd
     \cgalParamNBegin{topology_visitor}
       \cgalParamDescription{called with each `Topology_defect` the check finds (the cells and
@@ -220,8 +225,10 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
 \returns what the run did, including per-stage times.
 \throws Remeshing_error on an empty mesh, a non-triangle face, a non-finite map value or cell size, a cell size so small that
   the mapped input spans more than 2^29 cells (or lies that far from a given `grid_origin`), or when the output cap would be exceeded (also
-  while `preserve_topology` refines the cell size), or with `preserve_topology` in the
-  seeded mode; of kind `BAD_PARAMETER` if `out` is `tm`, or if `maximum_number` or
+  while `preserve_topology` refines the cell size); of kind `TOPOLOGY_NOT_PRESERVED` when
+  `preserve_topology` still finds defects after 40 refinements, or where a lost part
+  needs cells whose output would pass four times the cap; of kind `BAD_PARAMETER` with
+  `preserve_topology` in the seeded mode, if `out` is `tm`, or if `maximum_number` or
   `number_of_target_vertices` is negative or not whole, or the target is above the cap.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default) or `CGAL::Parallel_tag`

@@ -54,8 +54,7 @@ std::array<std::array<double, D>, 2> mapped_bounding_box(const TriangleMesh& tm,
 /// The grid origin where the default one (the origin) is more than 2^29 cells of size
 /// h from the mapped input: the lattice point of that grid at or below the lowest
 /// corner of its bounding box, so that the cells are (up to rounding) those of the
-/// default grid. The
-/// origin if that point is not finite.
+/// default grid. The origin if that point is not finite.
 template <class Point_d, class TriangleMesh, class RangeMap>
 Point_d lattice_point_below(const TriangleMesh& tm, const RangeMap& range_map, double h)
 {

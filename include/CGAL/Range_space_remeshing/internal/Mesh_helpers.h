@@ -59,16 +59,6 @@ std::size_t index_bound(const Range& range, IndexMap index)
   return bound;
 }
 
-/// x multiplied by 2^exponent, exactly where the result is a normal number (the
-/// factor itself may be beyond doubles: 2^1070 brings subnormal offsets to unit size).
-inline Vec3 scaled_by_power_of_two(Vec3 x, int exponent)
-{
-  if(exponent != 0)
-    for(double& c : x)
-      c = std::ldexp(c, exponent);
-  return x;
-}
-
 /// The sum of the Newell area vectors of the faces around v, with the coordinates
 /// taken relative to v and multiplied by 2^exponent.
 template <class PolygonMesh, class VertexPointMap>

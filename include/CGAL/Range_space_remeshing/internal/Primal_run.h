@@ -30,10 +30,14 @@
 #include <CGAL/tags.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
+#include <iomanip>
+#include <limits>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -178,13 +182,86 @@ std::unique_ptr<Primal_complex> trace_primal_complex(const TriangleMesh& tm, Tra
 }
 
 // The error of a refined run (past the first), for which the refinement could not
-// finish; an error of the first run, or a cancel, is rethrown as it is.
+// finish; an error of the first run, a cancel or check_refinement()'s refusal is rethrown as it is.
 inline Remeshing_error refinement_failure(const Remeshing_error& error, std::size_t refinements, double h)
 {
   return Remeshing_error("preserve_topology could not reach a cell size without topology defects (" +
                              std::to_string(refinements) + " refinements, to cell size " + std::to_string(h) +
                              "): " + error.what(),
                          Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
+}
+
+/// The extent in f (the longest side of the bounding box of their vertices' values)
+/// of input faces; zero if there are none.
+template <class TriangleMesh, class RangeMap, class FaceRange>
+double extent_of_faces(const TriangleMesh& tm, const RangeMap& range_map, const FaceRange& faces)
+{
+  constexpr int D = range_dimension<RangeMap>();
+  std::array<double, D> low, high;
+  low.fill(std::numeric_limits<double>::infinity());
+  high.fill(-std::numeric_limits<double>::infinity());
+  for(auto f : faces)
+    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
+      const auto& x = get(range_map, v);
+      for(int q = 0; q < D; ++q) {
+        low[q] = (std::min)(low[q], double(x[q]));
+        high[q] = (std::max)(high[q], double(x[q]));
+      }
+    }
+  double extent = 0;
+  for(int q = 0; q < D; ++q)
+    extent = (std::max)(extent, high[q] - low[q]);
+  return extent;
+}
+
+/// The extent in f of the smallest part of the input the run lost: a lost component,
+/// or the pieces the complex dropped (their input faces together: an overestimate
+/// where several pieces were dropped); infinity if it lost none.
+template <class TriangleMesh, class RangeMap, class Tracer, class FaceDescriptor>
+double smallest_lost_part(const TriangleMesh& tm, const RangeMap& range_map, Tracer& tracer,
+                          const Primal_complex& complex, const std::vector<Topology_defect<FaceDescriptor>>& defects)
+{
+  double smallest = std::numeric_limits<double>::infinity();
+  for(const auto& defect : defects)
+    if(defect.kind == Topology_defect_kind::LOST_COMPONENT)
+      smallest = (std::min)(smallest, extent_of_faces(tm, range_map, defect.input_faces));
+  if(complex.number_of_dropped_pieces() > 0) {
+    std::vector<FaceDescriptor> dropped;
+    const auto& vertices = tracer.intersection_vertices();
+    for(std::uint32_t v = 0; v < vertices.size(); ++v)
+      if(!complex.is_kept(v))
+        dropped.push_back(tracer.input().face_of_id(vertices[v].face_id));
+    smallest = (std::min)(smallest, extent_of_faces(tm, range_map, dropped));
+  }
+  return smallest;
+}
+
+/// With preserve_topology, before the run at a finer cell size than h: refuses at once
+/// a refinement that cannot end below the output cap, rather than after the runs that
+/// reach it (each about twice the last). A lost component of extent e in f is kept
+/// only by cells smaller than about e / 2, and the output grows as h^-2: refused where
+/// that predicts more than four times the cap. Also refuses the refinement past the last.
+template <class TriangleMesh, class RangeMap, class Tracer, class FaceDescriptor>
+void check_refinement(const TriangleMesh& tm, const RangeMap& range_map, Tracer& tracer, const Primal_complex& complex,
+                      const std::vector<Topology_defect<FaceDescriptor>>& defects, const Statistics& stats,
+                      double h, std::size_t refinements, std::size_t cap)
+{
+  std::ostringstream message;
+  message << std::setprecision(3) << "preserve_topology: at cell size " << h << " (" << refinements
+          << " refinements) ";
+  if(refinements == maximum_topology_refinements) {
+    message << "defects remain, and that was the last refinement";
+    throw Remeshing_error(message.str(), Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
+  }
+  const double needed = smallest_lost_part(tm, range_map, tracer, complex, defects) / 2;
+  if(!(needed < h))
+    return;
+  const double predicted = double((std::max)(stats.intersection_vertices, std::size_t(1))) * (h / needed) * (h / needed);
+  if(predicted > 4 * double(cap)) {
+    message << "a part of the input " << 2 * needed << " across (in units of f) is lost; keeping it needs cells of "
+            << "about " << needed << ", about " << predicted << " output vertices, above the cap of " << cap;
+    throw Remeshing_error(message.str(), Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
+  }
 }
 
 /// Whether `ConcurrencyTag` asks for the parallel scan (refused without TBB).
@@ -270,9 +347,7 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
       const std::vector<Topology_defect<face_descriptor>> defects =
           check_topology_of<face_descriptor>(tracer, *complex, options, stats, progress, start);
       if(options.preserve && !stats.topology_preserved()) {
-        if(refinements == maximum_topology_refinements)
-          throw Remeshing_error("defects remain at every cell size tried",
-                                Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
+        check_refinement(tm, range_map, tracer, *complex, defects, stats, h, refinements, options.maximum_vertices);
         h *= topology_refinement_factor;
         ++refinements;
         continue;
@@ -288,18 +363,15 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
       stats.time_total_ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start_total).count();
       return stats;
-    } catch(const Lattice_overflow& error) {
-      if(may_move_origin) { // once, to the input: the same cells, fewer of them from it
-        may_move_origin = false;
+    } catch(const Remeshing_error& error) {
+      if(may_move_origin && dynamic_cast<const Lattice_overflow*>(&error) != nullptr) {
+        may_move_origin = false; // once, to the input: the same cells, fewer of them from it
         origin = lattice_point_below<Point_d>(tm, range_map, h);
         continue;
       }
-      if(refinements == 0)
-        throw;
-      throw refinement_failure(error, refinements, h);
-    } catch(const Remeshing_error& error) {
-      if(refinements == 0 || error.kind() == Remeshing_error::Kind::CANCELLED)
-        throw; // as it is: a Remeshing_cancelled stays one
+      if(refinements == 0 || error.kind() == Remeshing_error::Kind::CANCELLED ||
+         error.kind() == Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED)
+        throw; // as it is: a Remeshing_cancelled stays one, check_refinement()'s says the refinements
       throw refinement_failure(error, refinements, h);
     }
   }

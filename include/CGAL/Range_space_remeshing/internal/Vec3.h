@@ -75,6 +75,16 @@ Vec3 average_normal(const PlaneRange& planes)
 
 inline Vec3 difference(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
 
+/// x multiplied by 2^exponent, exactly where the result is a normal number (the
+/// factor itself may be beyond doubles: 2^1070 brings subnormal offsets to unit size).
+inline Vec3 scaled_by_power_of_two(Vec3 x, int exponent)
+{
+  if(exponent != 0)
+    for(double& c : x)
+      c = std::ldexp(c, exponent);
+  return x;
+}
+
 /// The point of segment [a, b] closest to x (a, if the segment is a point).
 inline Vec3 closest_on_segment(const Vec3& x, const Vec3& a, const Vec3& b)
 {

@@ -18,12 +18,13 @@
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
 #include <CGAL/Range_space_remeshing/internal/Vec3.h>
 
+#include <CGAL/Bbox_3.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/property_map.h>
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 namespace CGAL {
 namespace Range_space_remeshing {
@@ -42,16 +43,8 @@ public:
   template <class PolygonMesh, class VertexPointMap>
   static Working_frame of(const PolygonMesh& mesh, VertexPointMap vpm)
   {
-    Vec3 low, high;
-    low.fill(std::numeric_limits<double>::infinity());
-    high.fill(-std::numeric_limits<double>::infinity());
-    for(auto v : vertices(mesh)) {
-      const Vec3 p = to_vec3(get(vpm, v));
-      for(int d = 0; d < 3; ++d) {
-        low[d] = (std::min)(low[d], p[d]);
-        high[d] = (std::max)(high[d], p[d]);
-      }
-    }
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(mesh, CGAL::parameters::vertex_point_map(vpm));
+    const Vec3 low = {{box.xmin(), box.ymin(), box.zmin()}}, high = {{box.xmax(), box.ymax(), box.zmax()}};
     double extent = 0;
     for(int d = 0; d < 3; ++d)
       extent = (std::max)(extent, high[d] / 2 - low[d] / 2); // halves: never beyond doubles
@@ -75,12 +68,8 @@ public:
   {
     if(is_identity())
       return;
-    for(auto v : vertices(mesh)) {
-      Vec3 p = to_vec3(get(vpm, v));
-      for(int d = 0; d < 3; ++d)
-        p[d] = std::ldexp(p[d] - centre_[d], -exponent_);
-      put_point(vpm, v, p);
-    }
+    for(auto v : vertices(mesh))
+      put_point(vpm, v, scaled_by_power_of_two(difference(to_vec3(get(vpm, v)), centre_), -exponent_));
   }
 
   /// Moves the points of `mesh` out of the frame, back to the input's coordinates;
@@ -91,9 +80,9 @@ public:
     if(is_identity())
       return;
     for(auto v : vertices(mesh)) {
-      Vec3 p = to_vec3(get(vpm, v));
+      Vec3 p = scaled_by_power_of_two(to_vec3(get(vpm, v)), exponent_);
       for(int d = 0; d < 3; ++d) {
-        p[d] = std::ldexp(p[d], exponent_) + centre_[d];
+        p[d] += centre_[d];
         if(!std::isfinite(p[d]))
           throw Remeshing_error("an output point lies beyond the largest double (1.8e308)",
                                 Remeshing_error::Kind::BAD_INPUT);
