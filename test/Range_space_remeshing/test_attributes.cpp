@@ -20,10 +20,13 @@
 #include <CGAL/Range_space_remeshing/Lazy_vertex_normal_map.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 
 #include <algorithm>
 #include <cmath>
+#include <random>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -268,11 +271,11 @@ double distance_to(const Mesh& m, const Point& p)
 /// each carried point's distance to the surface and of how much farther it is from
 /// its output vertex than the surface is. Robust to ties (an output vertex inside a
 /// cube, as far from two faces).
-double carried_error(const Mesh& input, const Mesh& surface, double scale)
+double carried_error(const Mesh& input, const Mesh& surface, double scale, double cell = 0.3)
 {
   Mesh quads;
   auto carried = quads.add_property_map<Vertex, Point>("v:carried_point").first;
-  RSR::remesh(input, quads, params::grid_spacing(0.3 * scale).vertex_attribute_maps(input.points()),
+  RSR::remesh(input, quads, params::grid_spacing(cell * scale).vertex_attribute_maps(input.points()),
               params::vertex_attribute_maps(carried));
   CHECK(num_vertices(quads) > 50);
   auto unscaled = [scale](const Point& p) { return Point(p.x() / scale, p.y() / scale, p.z() / scale); };
@@ -457,6 +460,58 @@ void test_flat_part()
   CHECK(off < 1e-9);
 }
 
+/// Two surfaces closer than a cell: nested spheres 0.01 apart (the inner one turned
+/// inside out: a shell) and two spheres through each other. Each output vertex must
+/// carry the nearest point of either. A search that started from the output's own
+/// structures (a walk over the input from the face of the nearest primal vertex, tried
+/// once) stayed on one sheet and took the other's values where it was nearer.
+void test_close_sheets()
+{
+  Mesh nested = make_sphere(1.0, 3);
+  Mesh inner = make_sphere(0.99, 3);
+  CGAL::Polygon_mesh_processing::reverse_face_orientations(inner);
+  CGAL::copy_face_graph(inner, nested);
+  Mesh crossing = make_sphere(1.0, 3);
+  CGAL::copy_face_graph(make_sphere(1.0, 3, Point(0.5, 0, 0)), crossing);
+  for(const auto& [name, input] : {std::make_pair("nested spheres", &nested), std::make_pair("crossing spheres", &crossing)}) {
+    const double error = carried_error(*input, *input, 1.0, 0.05);
+    std::cout << "remesh, " << name << ": carried positions off the nearest points by " << error << std::endl;
+    CHECK(error < 1e-12);
+  }
+}
+
+/// The nearest-point search itself against a look at every face, for queries on, near
+/// and far from the surface (a sphere and a speck beside it; far queries end in a scan
+/// of every cube), with cubes fitted to few and to many queries.
+void test_nearest_face_search()
+{
+  Mesh input = make_sphere(0.5, 3);
+  CGAL::copy_face_graph(make_sphere(0.01, 1, Point(0.9, 0.01, 0)), input);
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-1, 1), scale(0, 4);
+  std::vector<Point> queries;
+  for(int i = 0; i < 900; ++i) {
+    const Point p(coordinate(random), coordinate(random), coordinate(random));
+    const double s = i % 3 == 0 ? scale(random) : i % 3 == 1 ? 0.5 / std::sqrt(CGAL::to_double(CGAL::squared_distance(p, Point(0, 0, 0)))) : 1;
+    queries.emplace_back(s * p.x(), s * p.y(), s * p.z());
+  }
+  for(std::size_t fitted_to : {std::size_t(10), std::size_t(20000)}) {
+    const RSR::internal::Nearest_face_search<Mesh, decltype(input.points())> search(input, input.points(), fitted_to);
+    double worst = 0;
+    std::size_t hint = 0;
+    for(const Point& q : queries) {
+      const auto hit = search.nearest(RSR::internal::to_vec3(q), hint);
+      hint = hit.number;
+      const Point found(hit.point[0], hit.point[1], hit.point[2]);
+      const double by_search = std::sqrt(CGAL::to_double(CGAL::squared_distance(q, found)));
+      worst = (std::max)(worst, std::abs(by_search - distance_to(input, q)));
+    }
+    std::cout << "nearest-face search fitted to " << fitted_to << " queries: distances off the brute force's by "
+              << worst << std::endl;
+    CHECK(worst < 1e-12);
+  }
+}
+
 int main(int argc, char** argv)
 {
   if(argc < 2) {
@@ -470,5 +525,7 @@ int main(int argc, char** argv)
   test_needles_and_far_parts(argv[1]);
   test_flat_part();
   test_one_short_edge();
+  test_close_sheets();
+  test_nearest_face_search();
   return report("test_attributes");
 }

@@ -10,23 +10,14 @@
 // collapse, the relaxation and the untangling move the vertices after the dual gave
 // them the mean of their primal face's values, by up to about a cell, so a texture's
 // lines would waver. Each output vertex takes the values at the nearest point of the
-// input (CGAL's AABB tree finds it and its face).
+// input (Nearest_face_search.h finds it and its face).
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/internal/Nearest_face_search.h>
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
 #include <CGAL/Range_space_remeshing/internal/Vec3.h>
 #include <CGAL/Range_space_remeshing/internal/Vertex_attributes.h>
 
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
-#include <CGAL/AABB_tree.h>
-#include <CGAL/version.h>
-#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
-#include <CGAL/AABB_segment_primitive_3.h>
-#include <CGAL/AABB_traits_3.h>
-#else
-#include <CGAL/AABB_segment_primitive.h>
-#include <CGAL/AABB_traits.h>
-#endif
 #include <CGAL/Simple_cartesian.h>
 
 #include <algorithm>
@@ -99,21 +90,6 @@ inline std::array<double, 3> barycentric_weights(const Vec3& q, const std::array
       back[d] += by_area[i] * corners[i][d];
   const Vec3 off = difference(back, q);
   return dot(off, off) <= side_error ? by_area : on_side;
-}
-
-/// The corner the longest side of the triangle of `corners` starts at (it ends at the next).
-inline std::size_t longest_side_start(const std::array<Vec3, 3>& corners)
-{
-  std::size_t from = 0;
-  double longest = -1;
-  for(std::size_t i = 0; i < 3; ++i) {
-    const Vec3 side = difference(corners[(i + 1) % 3], corners[i]);
-    if(dot(side, side) > longest) {
-      longest = dot(side, side);
-      from = i;
-    }
-  }
-  return from;
 }
 
 /// The weights of q, a point of the line of the corners of a face without area: those
@@ -222,115 +198,6 @@ void check_attributes_can_be_sampled(const TriangleMesh& tm, VertexPointMap vpm)
   check_scale_range(tm, scaled_point_map(tm, vpm));
 }
 
-/// The faces of `tm` split by whether they have an area at the points of `vpm` (the
-/// scaled points). A face without area (a crease's copies, a split edge's corners on one
-/// line, a part flat at the scale of doubles: a tetrahedron 1e-80 thick) is searched as
-/// its longest side: CGAL's nearest point on it in doubles was 0 / 0, and leaving it out
-/// gave a part made only of such faces the values of another.
-template <class TriangleMesh, class PointMap>
-struct Searched_faces
-{
-  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
-  using Segment = typename CGAL::Simple_cartesian<double>::Segment_3;
-
-  std::vector<face_descriptor> with_area;
-  std::vector<face_descriptor> flat;
-  std::vector<Segment> longest_sides; // of the faces in `flat`, in their order
-
-  Searched_faces(const TriangleMesh& tm, const PointMap& vpm)
-  {
-    for(face_descriptor f : faces(tm)) {
-      const std::array<Vec3, 3> c = corners(f, tm, vpm);
-      const Vec3 n = cross(difference(c[1], c[0]), difference(c[2], c[0]));
-      if(n[0] != 0 || n[1] != 0 || n[2] != 0) {
-        with_area.push_back(f);
-        continue;
-      }
-      flat.push_back(f);
-      longest_sides.push_back(longest_side(c));
-    }
-  }
-
-  static std::array<Vec3, 3> corners(face_descriptor f, const TriangleMesh& tm, const PointMap& vpm)
-  {
-    const auto h = halfedge(f, tm);
-    return {{to_vec3(get(vpm, source(h, tm))), to_vec3(get(vpm, target(h, tm))),
-             to_vec3(get(vpm, target(next(h, tm), tm)))}};
-  }
-
-  static Segment longest_side(const std::array<Vec3, 3>& c)
-  {
-    const std::size_t from = longest_side_start(c);
-    const Vec3& a = c[from];
-    const Vec3& b = c[(from + 1) % 3];
-    using Point = typename CGAL::Simple_cartesian<double>::Point_3;
-    return Segment(Point(a[0], a[1], a[2]), Point(b[0], b[1], b[2]));
-  }
-};
-
-/// The nearest point of the input to a query and the input face it lies on, from the
-/// trees of the faces with an area and of the longest sides of those without.
-template <class TriangleMesh, class PointMap>
-class Nearest_face_search
-{
-  using Kernel = CGAL::Simple_cartesian<double>;
-  using Faces = Searched_faces<TriangleMesh, PointMap>;
-  using face_descriptor = typename Faces::face_descriptor;
-  using Segment_iterator = typename std::vector<typename Faces::Segment>::const_iterator;
-  using Triangle_primitive = CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, PointMap>;
-#if CGAL_VERSION_NR >= CGAL_VERSION_NUMBER(6, 0, 0)
-  using Segment_primitive = CGAL::AABB_segment_primitive_3<Kernel, Segment_iterator>;
-  using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits_3<Kernel, Triangle_primitive>>;
-  using Segment_tree = CGAL::AABB_tree<CGAL::AABB_traits_3<Kernel, Segment_primitive>>;
-#else
-  using Segment_primitive = CGAL::AABB_segment_primitive<Kernel, Segment_iterator>;
-  using Triangle_tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Triangle_primitive>>;
-  using Segment_tree = CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Segment_primitive>>;
-#endif
-
-public:
-  struct Hit
-  {
-    face_descriptor face;
-    Vec3 point;
-    bool flat; // the face has no area: weigh along its line
-  };
-
-  Nearest_face_search(const TriangleMesh& tm, const PointMap& vpm) : faces_(tm, vpm)
-  {
-    if(!faces_.with_area.empty()) {
-      triangles_.insert(faces_.with_area.begin(), faces_.with_area.end(), tm, vpm);
-      triangles_.accelerate_distance_queries();
-    }
-    if(!faces_.flat.empty()) {
-      segments_.insert(faces_.longest_sides.cbegin(), faces_.longest_sides.cend());
-      segments_.accelerate_distance_queries();
-    }
-  }
-
-  Hit nearest(const typename Kernel::Point_3& q) const
-  {
-    Hit hit{face_descriptor(), Vec3{{0, 0, 0}}, false};
-    double best = std::numeric_limits<double>::infinity();
-    if(!faces_.with_area.empty()) {
-      const auto found = triangles_.closest_point_and_primitive(q);
-      best = CGAL::squared_distance(q, found.first);
-      hit = {found.second, to_vec3(found.first), false};
-    }
-    if(!faces_.flat.empty()) {
-      const auto found = segments_.closest_point_and_primitive(q);
-      if(CGAL::squared_distance(q, found.first) < best)
-        hit = {faces_.flat[std::size_t(found.second - faces_.longest_sides.cbegin())], to_vec3(found.first), true};
-    }
-    return hit;
-  }
-
-private:
-  Faces faces_;
-  Triangle_tree triangles_;
-  Segment_tree segments_;
-};
-
 /// Puts at every vertex of `out` the mix of the attributes' input values at the
 /// nearest point of `tm` (its vertex points `vpm`) to the vertex's point (`out_vpm`).
 /// `tm` passed check_attributes_can_be_sampled().
@@ -344,12 +211,13 @@ void sample_attributes_at_nearest_points(const TriangleMesh& tm, VertexPointMap 
   if(faces(tm).empty())
     return;
   const Scaled scaled_vpm = scaled_point_map(tm, vpm);
-  const Nearest_face_search<TriangleMesh, Scaled> search(tm, scaled_vpm);
+  const Nearest_face_search<TriangleMesh, Scaled> search(tm, scaled_vpm, num_vertices(out));
   std::array<std::pair<vertex_descriptor, double>, 3> sources;
-  std::size_t done = 0;
+  std::size_t done = 0, hint = 0;
   for(auto v : vertices(out)) {
     progress.report_every(Remeshing_stage::RELAXATION, done++, num_vertices(out));
-    const auto hit = search.nearest(scaled_vpm(to_vec3(get(out_vpm, v))));
+    const auto hit = search.nearest(to_vec3(scaled_vpm(to_vec3(get(out_vpm, v)))), hint);
+    hint = hit.number;
     const auto h = halfedge(hit.face, tm);
     const std::array<vertex_descriptor, 3> corners = {source(h, tm), target(h, tm), target(next(h, tm), tm)};
     const std::array<Vec3, 3> at = Searched_faces<TriangleMesh, Scaled>::corners(hit.face, tm, scaled_vpm);
