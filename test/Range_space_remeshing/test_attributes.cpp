@@ -481,15 +481,24 @@ void test_close_sheets()
 }
 
 /// The nearest-point search itself against a look at every face, for queries on, near
-/// and far from the surface (a sphere and a speck beside it; far queries end in a scan
-/// of every cube), with cubes fitted to few and to many queries.
+/// and far from the surface (a sphere, a speck beside it, and a needle: a split edge's
+/// middle point an ulp off its line, so that its plane's normal is rounding noise;
+/// far queries end in a scan of every cube), with cubes fitted to few and to many
+/// queries.
 void test_nearest_face_search()
 {
   Mesh input = make_sphere(0.5, 3);
   CGAL::copy_face_graph(make_sphere(0.01, 1, Point(0.9, 0.01, 0)), input);
+  const Point needle_end(0.9, 0.7, -0.7);
+  input.add_face(input.add_vertex(Point(0, 0, -0.6)), input.add_vertex(needle_end),
+                 input.add_vertex(Point(0.3, 0.7 / 3, -0.6 - 0.1 / 3)));
   std::mt19937 random(7);
-  std::uniform_real_distribution<double> coordinate(-1, 1), scale(0, 4);
+  std::uniform_real_distribution<double> coordinate(-1, 1), scale(0, 4), along(0, 1), beside(-1e-3, 1e-3);
   std::vector<Point> queries;
+  for(int i = 0; i < 300; ++i) {
+    const double t = along(random);
+    queries.emplace_back(t * 0.9 + beside(random), t * 0.7 + beside(random), -0.6 - t * 0.1 + beside(random));
+  }
   for(int i = 0; i < 900; ++i) {
     const Point p(coordinate(random), coordinate(random), coordinate(random));
     const double s = i % 3 == 0 ? scale(random) : i % 3 == 1 ? 0.5 / std::sqrt(CGAL::to_double(CGAL::squared_distance(p, Point(0, 0, 0)))) : 1;

@@ -14,12 +14,13 @@
 // hold the fan's middle, so that each query there visited nearly every face (a fan of
 // 8,000 slivers took a quarter of a minute for 5,000 queries). Here each face is
 // registered in the cubes of a uniform grid that it meets, found by halving the cubes
-// of its box and keeping the halves it meets (CGAL's face-box test on cubes widened past its rounding): a sliver is
-// in as many cubes as it is long, not as many as its box holds. A query scans the cubes
+// of its box and keeping the halves it meets (see meets()): a sliver is in as many
+// cubes as it is long, not as many as its box holds. A query scans the cubes
 // around it ring by ring, each cube only if it is nearer than the nearest face found,
 // until no cube further out can be: the answer is the nearest point of all the faces,
 // as the tree's was, whatever the components.
 
+#include <CGAL/Range_space_remeshing/Remeshing_error.h>
 #include <CGAL/Range_space_remeshing/internal/Vec3.h>
 
 #include <CGAL/Bbox_3.h>
@@ -76,6 +77,7 @@ struct Searched_faces
   {
     Vec3 start, direction; // the side's start and unit direction
     double length, reach;
+    bool well_shaped; // CGAL's face-box test on its triangle is reliable (see meets())
   };
   std::vector<Capsule> capsules;
 
@@ -114,18 +116,23 @@ struct Searched_faces
         x /= length;
     const Vec3 off = difference(c[other], closest_on_segment(c[other], c[from], c[to]));
     capsule.reach = std::sqrt(dot(off, off));
+    // CGAL's test starts from the triangle's plane, of normal (c0 - c2) x (c1 - c2): its
+    // direction is off by about 2^-52 / sin(angle at c2), far below the margin of
+    // meets() if that sine is above 2^-10
+    const Vec3 a = difference(c[0], c[2]), b = difference(c[1], c[2]), n = cross(a, b);
+    capsule.well_shaped = dot(n, n) >= std::ldexp(dot(a, a) * dot(b, b), -20);
     return capsule;
   }
 
-  /// Whether face i may be within `limit` of q: false only if its capsule is farther
-  /// (the points are within [-1, 1], so the rounding is far below the margin of 2^-40).
+  /// Whether face i may be within `limit` of q: false only if its capsule is farther.
+  /// `limit` includes the search's slack, far above the rounding here.
   bool may_be_within(const Vec3& q, std::size_t i, double limit) const
   {
     const Capsule& c = capsules[i];
     const Vec3 off = difference(q, c.start);
     const double t = (std::min)((std::max)(dot(off, c.direction), 0.), c.length);
     const Vec3 away = {{off[0] - t * c.direction[0], off[1] - t * c.direction[1], off[2] - t * c.direction[2]}};
-    const double reach = limit + c.reach + std::ldexp(1., -40);
+    const double reach = limit + c.reach;
     return dot(away, away) <= reach * reach;
   }
 
@@ -216,10 +223,15 @@ public:
   /// The search over the faces of `tm` at the points of `vpm` (within [-1, 1]: see
   /// scaled_point_map()), for about `number_of_queries` queries near the surface.
   Nearest_face_search(const TriangleMesh& tm, const PointMap& vpm, std::size_t number_of_queries)
-      : faces_(tm, vpm), budget_(8 * (faces_.face.size() + number_of_queries + 1))
+      : faces_(tm, vpm),
+        budget_((std::min)(8 * (faces_.face.size() + number_of_queries + 1),
+                           std::size_t((std::numeric_limits<std::uint32_t>::max)())))
   {
     if(faces_.face.empty())
       return;
+    if(faces_.face.size() >= (std::size_t(1) << 29)) // numbered in 32 bits, as the registrations
+      throw Remeshing_error("too many input faces (2^29 or more) to sample the vertex attributes",
+                            Remeshing_error::Kind::OUTPUT_TOO_LARGE);
     bound_faces();
     // cubes as small as the queries' spacing, unless the faces would then be registered
     // more often than the budget allows (long faces: a fan's slivers): then larger, by
@@ -238,7 +250,11 @@ public:
   /// the smaller number).
   Hit nearest(const Vec3& q, std::size_t hint = 0) const
   {
-    Nearest best{std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), 0, q};
+    const double infinity = std::numeric_limits<double>::infinity();
+    // the slack of every comparison of distances: far above their rounding, so that a
+    // face as near as the best (a tie) or nearer by rounding is always looked at
+    const double slack = std::ldexp(1 + (std::max)({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])}), -40);
+    Nearest best{infinity, infinity, 0, q, slack};
     if(hint < faces_.face.size())
       consider(q, hint, best);
     const Index centre = {{grid_.index(0, q[0]), grid_.index(1, q[1]), grid_.index(2, q[2])}};
@@ -249,7 +265,8 @@ public:
         break;
       }
       scan_ring(q, centre, ring, best);
-      if(!(best.squared_distance > squared(distance_beyond_ring(q, centre, ring))))
+      const double beyond = distance_beyond_ring(q, centre, ring);
+      if(beyond == infinity || beyond > best.limit())
         break;
     }
     return {faces_.face[best.face], best.point, faces_.is_flat(best.face), best.face};
@@ -261,6 +278,9 @@ private:
     double squared_distance, distance;
     std::size_t face; // in faces_
     Vec3 point;
+    double slack;
+
+    double limit() const { return distance + slack; } // farther faces need no look
   };
 
   static double squared(double x) { return x * x; }
@@ -356,21 +376,27 @@ private:
            (!meets(i, grid_.box(upper_first, last)) || register_in(i, upper_first, last, registered));
   }
 
-  /// Whether face i may meet `box`: false only if it does not. The test runs in doubles
-  /// on the box widened by 2^-40, far more than its rounding errors (the points are
-  /// within [-1, 1]): a few times faster than the exact test, and as safe here, where
-  /// a face registered in a cube more is only scanned once more.
+  /// Whether face i may meet `box`: false only if it does not. The tests run in doubles
+  /// on the box widened by 2^-40, far more than their rounding errors on points within
+  /// [-1, 1]: a triangle whose plane CGAL's test cannot trust (a needle, a sliver
+  /// seen from its sharp corner) is tested as its capsule, the longest side on the box
+  /// widened by the capsule's reach too. Faster than an exact test, and as safe here,
+  /// where a face registered in one cube more is only scanned once more.
   bool meets(std::size_t i, const CGAL::Bbox_3& box) const
   {
-    const double margin = std::ldexp(1., -40);
+    const auto& c = faces_.at[i];
+    const auto& capsule = faces_.capsules[i];
+    const bool as_triangle = !faces_.is_flat(i) && capsule.well_shaped;
+    const double margin = std::ldexp(1., -40) + (as_triangle ? 0 : capsule.reach);
     const CGAL::Bbox_3 widened(box.xmin() - margin, box.ymin() - margin, box.zmin() - margin, box.xmax() + margin,
                                box.ymax() + margin, box.zmax() + margin);
-    const auto& c = faces_.at[i];
     const auto point = [](const Vec3& x) { return Kernel::Point_3(x[0], x[1], x[2]); };
-    if(faces_.is_flat(i))
-      return c[0] == c[1] ? CGAL::do_overlap(widened, point(c[0]).bbox())
-                          : CGAL::do_intersect(Kernel::Segment_3(point(c[0]), point(c[1])), widened);
-    return CGAL::do_intersect(Kernel::Triangle_3(point(c[0]), point(c[1]), point(c[2])), widened);
+    if(as_triangle)
+      return CGAL::do_intersect(Kernel::Triangle_3(point(c[0]), point(c[1]), point(c[2])), widened);
+    const std::size_t from = longest_side_start(c); // the capsule's side
+    const Vec3 &start = c[from], &end = c[(from + 1) % 3];
+    return start == end ? CGAL::do_overlap(widened, point(start).bbox())
+                        : CGAL::do_intersect(Kernel::Segment_3(point(start), point(end)), widened);
   }
 
   /// Scans the cubes of the ring at Chebyshev distance `ring` from `centre` that are
@@ -393,7 +419,7 @@ private:
             i[2] = (std::max)(i[2], centre[2] + ring - 1); // the inner cubes were scanned
             continue;
           }
-          if(squared_distance_to_cube(q, i) < best.squared_distance)
+          if(squared_distance_to_cube(q, i) <= squared(best.limit()))
             scan_cube(q, i, best);
         }
   }
@@ -402,7 +428,7 @@ private:
   {
     for(const auto& cube : cubes_) {
       const Index i = Cube_grid::index_of(cube.first);
-      if(squared_distance_to_cube(q, i) < best.squared_distance)
+      if(squared_distance_to_cube(q, i) <= squared(best.limit()))
         for(std::uint32_t k = cube.second.first; k < cube.second.second; ++k)
           consider(q, cube_faces_[k], best);
     }
@@ -430,7 +456,7 @@ private:
   /// Face f's nearest point to q, if nearer than the best (the earlier face on a tie).
   void consider(const Vec3& q, std::size_t f, Nearest& best) const
   {
-    if(!faces_.may_be_within(q, f, best.distance))
+    if(!faces_.may_be_within(q, f, best.limit()))
       return;
     const auto& c = faces_.at[f];
     const auto point = [](const Vec3& x) { return Kernel::Point_3(x[0], x[1], x[2]); };
@@ -441,7 +467,7 @@ private:
                                 Kernel::Triangle_3(point(c[0]), point(c[1]), point(c[2])), p);
     const double d2 = CGAL::squared_distance(p, nearest);
     if(d2 < best.squared_distance || (d2 == best.squared_distance && f < best.face))
-      best = {d2, std::sqrt(d2), f, to_vec3(nearest)};
+      best = {d2, std::sqrt(d2), f, to_vec3(nearest), best.slack};
   }
 
   /// A lower bound of the distance from q to the cubes beyond the ring: the distance to
@@ -459,7 +485,7 @@ private:
   }
 
   Faces faces_;
-  std::size_t budget_; // registrations: eight per face and query
+  std::size_t budget_; // registrations: eight per face and query, below 2^32
   Vec3 low_, high_;
   double extent_ = 0;
   Cube_grid grid_;
