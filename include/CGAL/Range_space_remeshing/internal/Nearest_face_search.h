@@ -250,11 +250,11 @@ public:
   /// the smaller number).
   Hit nearest(const Vec3& q, std::size_t hint = 0) const
   {
-    const double infinity = std::numeric_limits<double>::infinity();
+    const double unbounded = std::numeric_limits<double>::infinity();
     // the slack of every comparison of distances: far above their rounding, so that a
     // face as near as the best (a tie) or nearer by rounding is always looked at
     const double slack = std::ldexp(1 + (std::max)({std::abs(q[0]), std::abs(q[1]), std::abs(q[2])}), -40);
-    Nearest best{infinity, infinity, 0, q, slack};
+    Nearest best{unbounded, unbounded, 0, q, slack};
     if(hint < faces_.face.size())
       consider(q, hint, best);
     const Index centre = {{grid_.index(0, q[0]), grid_.index(1, q[1]), grid_.index(2, q[2])}};
@@ -266,7 +266,7 @@ public:
       }
       scan_ring(q, centre, ring, best);
       const double beyond = distance_beyond_ring(q, centre, ring);
-      if(beyond == infinity || beyond > best.limit())
+      if(beyond == unbounded || beyond > best.limit())
         break;
     }
     return {faces_.face[best.face], best.point, faces_.is_flat(best.face), best.face};
