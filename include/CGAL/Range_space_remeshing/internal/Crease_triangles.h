@@ -159,11 +159,14 @@ private:
     for(halfedge_descriptor h : holes) {
       if(filled[get(out_halfedge_index, h)] || !is_border(h, out))
         continue;
-      for(halfedge_descriptor g : CGAL::halfedges_around_face(h, out))
+      std::size_t corners = 0; // the hole's, counted once: degree() at each split is O(k), O(k^2) in all
+      for(halfedge_descriptor g : CGAL::halfedges_around_face(h, out)) {
         filled[get(out_halfedge_index, g)] = 1;
+        ++corners;
+      }
       CGAL::Euler::fill_hole(h, out);
       halfedge_descriptor g = h;
-      while(degree(face(g, out), out) > 3) {
+      for(; corners > 3; --corners) { // each split cuts a triangle off the polygon
         g = prev(CGAL::Euler::split_face(g, next(next(g, out), out), out), out);
         ++stats_.crease_triangles;
       }
