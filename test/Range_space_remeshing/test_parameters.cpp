@@ -279,6 +279,16 @@ void test_far_from_origin()
   CHECK(num_faces(quads) > 100);
   const std::array<double, 3> origin = {{0, 0, 0}};
   CHECK(throws_kind([&] { RSR::primal_remesh(far, far_out, np.grid_origin(origin)); }, Kind::OUTPUT_TOO_LARGE));
+  // where doubles no longer resolve a cell (a unit sphere at 1e15, cell 0.05: coordinates
+  // 0.125 apart; a sphere 1e-12 across at 1e3, its default cell 3e-14, coordinates 1e-13
+  // apart), the cells cannot bound the faces: refused, with the way out
+  const Mesh farther = make_sphere(1.0, 3, Point(1e15, 1e15, 1e15));
+  CHECK(throws_kind([&] { RSR::primal_remesh(farther, far_out, RSR::parameters::grid_spacing(0.05)); },
+                    Kind::BAD_INPUT));
+  const Mesh speck = make_sphere(1e-12, 2, Point(1e3, 1e3, 1e3));
+  CHECK(throws_kind([&] { RSR::remesh(speck, quads); }, Kind::BAD_INPUT));
+  const std::array<double, 3> far_origin = {{1e15, 0, 0}};
+  CHECK(throws_kind([&] { RSR::primal_remesh(near, near_out, np.grid_origin(far_origin)); }, Kind::BAD_PARAMETER));
 }
 
 /// preserve_topology with a part far too small for the cap (a sphere 1e-5 across beside

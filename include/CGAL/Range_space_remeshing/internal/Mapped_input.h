@@ -34,12 +34,18 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <iomanip>
+#include <sstream>
 #include <string>
 #include <vector>
 
 namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
+
+/// Range values are refused from 2^42 cells on: the unit in their last place would be
+/// more than 2^-10 of a cell.
+constexpr int resolution_exponent = 42;
 
 /// The refusal of a range coordinate beyond the lattice's 32-bit levels, of its own
 /// type so that `primal_remesh_at()` can move a default grid origin next to the input
@@ -115,10 +121,14 @@ public:
   Mapped_input(const TriangleMesh& tm, RangeMap range_map, FaceIndexMap face_index, VertexIndexMap vertex_index,
                const Point_d& origin, double cell_size)
     : tm_(tm), range_map_(range_map), face_index_(face_index), vertex_index_(vertex_index), origin_(origin),
-      cell_size_(cell_size), mapped_(num_vertices(tm)), mapped_vertices_(num_vertices(tm)),
-      vertex_of_id_(num_vertices(tm)), records_(num_faces(tm)), recorded_(num_faces(tm)),
-      face_of_id_(num_faces(tm))
-  {}
+      cell_size_(cell_size), resolved_value_(std::ldexp(cell_size, resolution_exponent)),
+      mapped_(num_vertices(tm)), mapped_vertices_(num_vertices(tm)), vertex_of_id_(num_vertices(tm)),
+      records_(num_faces(tm)), recorded_(num_faces(tm)), face_of_id_(num_faces(tm))
+  {
+    for(int q = 0; q < D; ++q)
+      if(!(std::abs(origin_[q]) < resolved_value_))
+        throw Remeshing_error(unresolved(origin_[q], "the grid origin's coordinate"), Remeshing_error::Kind::BAD_PARAMETER);
+  }
 
   const TriangleMesh& mesh() const { return tm_; }
   FaceIndexMap face_index_map() const { return face_index_; }
@@ -340,17 +350,32 @@ private:
     Levels& c = mapped_vertices_[id].ceiling;
     for(int q = 0; q < D; ++q) {
       x[q] = (f[q] - origin_[q]) / cell_size_;
-      if(!(std::abs(x[q]) < maximum_lattice_coordinate)) // NaN too: one test on the common path
-        refuse_coordinate(f[q], id);
+      if(!(std::abs(x[q]) < maximum_lattice_coordinate) || !(std::abs(f[q]) < resolved_value_)) // NaN too
+        refuse_coordinate(f[q], x[q], id);
       c[q] = ceil_to_int(x[q]);
     }
   }
 
-  [[noreturn]] static void refuse_coordinate(double value, std::uint32_t id)
+  [[noreturn]] void refuse_coordinate(double value, double in_cells, std::uint32_t id) const
   {
     if(!std::isfinite(value))
       throw Remeshing_error("the range map gives a NaN or infinite value at input vertex " + std::to_string(id));
+    if(!(std::abs(value) < resolved_value_)) // first: no grid origin helps
+      throw Remeshing_error(unresolved(value, "the range map's value at input vertex " + std::to_string(id)),
+                            Remeshing_error::Kind::BAD_INPUT);
+    CGAL_assertion(!(std::abs(in_cells) < maximum_lattice_coordinate));
     throw Lattice_overflow();
+  }
+
+  /// The refusal of a value so large beside the cell size that doubles place it only
+  /// to within a thousandth of a cell: the cells would no longer bound the faces.
+  std::string unresolved(double value, const std::string& what) const
+  {
+    std::ostringstream message;
+    message << std::setprecision(3) << "the cell size (" << cell_size_ << ") is below 2^-" << resolution_exponent
+            << " of " << what << " (" << value << "): doubles place it only to within a thousandth of a cell; "
+            << "move the input nearer the origin of the range space, or use a larger cell size";
+    return message.str();
   }
 
   /// Fills the record of a face: the only entry it writes (any thread).
@@ -402,6 +427,7 @@ private:
   VertexIndexMap vertex_index_;
   Point_d origin_;
   double cell_size_;
+  double resolved_value_; // range values at least this large are refused (see unresolved())
 
   // The arrays by input vertex or face are zeroed lazily, or not at all where each
   // entry is written before it is read: a seeded run touches only a fraction of them
