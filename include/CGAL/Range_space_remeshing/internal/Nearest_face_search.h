@@ -27,6 +27,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/boost/graph/iterator.h>
 
+#include <boost/container_hash/hash.hpp>
 #include <boost/graph/graph_traits.hpp>
 
 #include <algorithm>
@@ -152,8 +153,8 @@ struct Searched_faces
 class Cube_grid
 {
 public:
-  using Key = std::uint64_t;
-  static constexpr int bits = 21; // per axis: at most 2^21 cubes along one
+  using Key = std::array<std::int64_t, 3>; // the cube's index along each axis
+  using Key_hash = boost::hash<Key>;
 
   Cube_grid() = default;
   Cube_grid(const Vec3& low, const Vec3& high, double side) : low_(low), side_(side)
@@ -178,16 +179,8 @@ public:
     return i;
   }
 
-  static Key key(const std::array<std::int64_t, 3>& i)
-  {
-    return (Key(i[0]) << (2 * bits)) | (Key(i[1]) << bits) | Key(i[2]);
-  }
-
-  static std::array<std::int64_t, 3> index_of(Key key)
-  {
-    const Key mask = (Key(1) << bits) - 1;
-    return {{std::int64_t(key >> (2 * bits)), std::int64_t((key >> bits) & mask), std::int64_t(key & mask)}};
-  }
+  static Key key(const std::array<std::int64_t, 3>& i) { return i; }
+  static std::array<std::int64_t, 3> index_of(const Key& key) { return key; }
 
   /// The box of the cubes from `first` to `last` (inclusive) along each axis.
   CGAL::Bbox_3 box(const std::array<std::int64_t, 3>& first, const std::array<std::int64_t, 3>& last) const
@@ -320,7 +313,8 @@ private:
     const double spare = double(budget_) - double(faces_.face.size()); // > 0
     const double within_budget = (b + std::sqrt(b * b + 4 * a * spare)) / (2 * spare);
     const double side = (std::max)({std::sqrt(area / queries), within_budget,
-                                    extent_ * std::ldexp(1., -20)}); // at most 2^21 cubes along an axis
+                                    extent_ * std::ldexp(1., -40)}); // at most 2^40 cubes along an axis:
+    // a speck far from the rest must not make the rest's cubes large
     return side > 0 && std::isfinite(side) ? side : 1.;
   }
 
@@ -489,7 +483,8 @@ private:
   Vec3 low_, high_;
   double extent_ = 0;
   Cube_grid grid_;
-  std::unordered_map<Cube_grid::Key, std::pair<std::uint32_t, std::uint32_t>> cubes_; // ranges of cube_faces_
+  std::unordered_map<Cube_grid::Key, std::pair<std::uint32_t, std::uint32_t>, Cube_grid::Key_hash>
+      cubes_; // ranges of cube_faces_
   std::vector<std::uint32_t> cube_faces_;
 };
 
