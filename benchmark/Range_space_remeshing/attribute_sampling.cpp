@@ -4,8 +4,8 @@
 // (`vertex_attribute_maps`); the sampling's cost is the difference of the medians.
 // Inputs: fans of long thin triangles (a unit square as two fans from opposite
 // corners, N = 1,000 to 100,000 triangles each, or up to --fans-up-to; generated here:
-// what CAD exports make of a flat face),
-// then the meshes named. Also the largest distance from a carried point to its
+// what CAD exports make of a flat face), a unit sphere with a speck 1e7 away (cell
+// size 0.05: the speck must not make the sphere's cubes large), then the meshes named. Also the largest distance from a carried point to its
 // output vertex's nearest point, which must stay at rounding level. A Markdown table
 // on stdout.
 #include <CGAL/Range_space_remeshing/remesh.h>
@@ -13,6 +13,8 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/generators.h>
+#include <CGAL/subdivision_method_3.h>
 
 #include <algorithm>
 #include <chrono>
@@ -54,6 +56,21 @@ Mesh sliver_fans(std::size_t n)
   return m;
 }
 
+/// A unit sphere of 81,920 triangles (an icosahedron, Loop-subdivided six times, its
+/// points pushed onto the sphere) and a tetrahedron 0.01 across at (1e7, 0, 0).
+Mesh sphere_with_far_speck()
+{
+  Mesh m;
+  CGAL::make_icosahedron(m, Point(0, 0, 0), 1.0);
+  CGAL::Subdivision_method_3::Loop_subdivision(m, CGAL::parameters::number_of_iterations(6));
+  for(auto v : vertices(m)) {
+    const auto x = m.point(v) - CGAL::ORIGIN;
+    m.point(v) = CGAL::ORIGIN + x / std::sqrt(x.squared_length());
+  }
+  CGAL::make_tetrahedron(Point(1e7, 0, 0), Point(1e7 + 0.01, 0, 0), Point(1e7, 0.01, 0), Point(1e7, 0, 0.01), m);
+  return m;
+}
+
 double median(std::vector<double> v)
 {
   std::sort(v.begin(), v.end());
@@ -65,21 +82,28 @@ double milliseconds_since(Clock::time_point start)
   return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
 
-void measure(const std::string& name, const Mesh& input, int runs)
+/// `cell_size` 0: the default.
+void measure(const std::string& name, const Mesh& input, int runs, double cell_size = 0)
 {
+  const auto base = RSR::parameters::vertex_point_map(input.points()); // the default, to start a chain
+  auto remesh = [&](Mesh& output, const auto& np, const auto&... output_np) {
+    if(cell_size > 0)
+      RSR::remesh(input, output, np.grid_spacing(cell_size), output_np...);
+    else
+      RSR::remesh(input, output, np, output_np...);
+  };
   std::vector<double> plain, carried;
   std::size_t output_vertices = 0;
   double off = 0;
   for(int run = 0; run < runs; ++run) {
     Mesh quads;
     Clock::time_point start = Clock::now();
-    RSR::remesh(input, quads);
+    remesh(quads, base);
     plain.push_back(milliseconds_since(start));
     Mesh with;
     auto carried_point = with.add_property_map<Mesh::Vertex_index, Point>("v:carried").first;
     start = Clock::now();
-    RSR::remesh(input, with, RSR::parameters::vertex_attribute_maps(input.points()),
-                RSR::parameters::vertex_attribute_maps(carried_point));
+    remesh(with, base.vertex_attribute_maps(input.points()), RSR::parameters::vertex_attribute_maps(carried_point));
     carried.push_back(milliseconds_since(start));
     output_vertices = num_vertices(with);
     off = 0;
@@ -116,6 +140,7 @@ int main(int argc, char** argv)
   for(std::size_t n : {1000, 8000, 32000, 100000})
     if(n <= largest_fan)
       measure("fans of " + std::to_string(n) + " slivers", sliver_fans(n), runs);
+  measure("sphere, speck 1e7 away", sphere_with_far_speck(), runs, 0.05);
   for(const std::string& path : meshes) {
     Mesh m;
     if(!CGAL::IO::read_polygon_mesh(path, m) || !CGAL::is_triangle_mesh(m)) {

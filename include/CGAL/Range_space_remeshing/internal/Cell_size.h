@@ -16,6 +16,9 @@
 
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/Iterator_range.h>
+
+#include <boost/iterator/filter_iterator.hpp>
 
 #include <algorithm>
 #include <array>
@@ -28,18 +31,15 @@ namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
 
-/// The bounding box (lowest and highest coordinates) of f over the vertices on a face
-/// (an isolated vertex is never mapped by the remesh); empty (infinite, low above high)
-/// if there is none.
-template <int D, class TriangleMesh, class RangeMap>
-std::array<std::array<double, D>, 2> mapped_bounding_box(const TriangleMesh& tm, const RangeMap& range_map)
+/// The bounding box (lowest and highest coordinates) of f over `vertex_range`; empty
+/// (infinite, low above high) if there is none.
+template <int D, class RangeMap, class VertexRange>
+std::array<std::array<double, D>, 2> mapped_box_of(const RangeMap& range_map, const VertexRange& vertex_range)
 {
   std::array<double, D> low, high;
   low.fill(std::numeric_limits<double>::infinity());
   high.fill(-std::numeric_limits<double>::infinity());
-  for(auto v : vertices(tm)) {
-    if(halfedge(v, tm) == boost::graph_traits<TriangleMesh>::null_halfedge())
-      continue;
+  for(auto v : vertex_range) {
     const auto& x = get(range_map, v);
     for(int q = 0; q < D; ++q) {
       if(!std::isfinite(double(x[q])))
@@ -49,6 +49,17 @@ std::array<std::array<double, D>, 2> mapped_bounding_box(const TriangleMesh& tm,
     }
   }
   return {{low, high}};
+}
+
+/// The bounding box of f over the vertices on a face (an isolated vertex is never
+/// mapped by the remesh).
+template <int D, class TriangleMesh, class RangeMap>
+std::array<std::array<double, D>, 2> mapped_bounding_box(const TriangleMesh& tm, const RangeMap& range_map)
+{
+  auto on_a_face = [&tm](auto v) { return halfedge(v, tm) != boost::graph_traits<TriangleMesh>::null_halfedge(); };
+  const auto all = vertices(tm);
+  return mapped_box_of<D>(range_map, CGAL::make_range(boost::make_filter_iterator(on_a_face, all.begin(), all.end()),
+                                                      boost::make_filter_iterator(on_a_face, all.end(), all.end())));
 }
 
 /// The grid origin where the default one (the origin) is more than 2^29 cells of size

@@ -78,40 +78,41 @@ struct Searched_faces
   {
     Vec3 start, direction; // the side's start and unit direction
     double length, reach;
+    std::size_t from; // the corner the side starts at
     bool well_shaped; // CGAL's face-box test on its triangle is reliable (see meets())
   };
   std::vector<Capsule> capsules;
 
   Searched_faces(const TriangleMesh& tm, const PointMap& vpm)
   {
-    std::vector<face_descriptor> flat;
+    std::vector<std::pair<face_descriptor, std::array<Vec3, 3>>> flat;
     for(face_descriptor f : faces(tm)) {
       const std::array<Vec3, 3> c = corners(f, tm, vpm);
       const Vec3 n = cross(difference(c[1], c[0]), difference(c[2], c[0]));
       if(n[0] != 0 || n[1] != 0 || n[2] != 0) {
         face.push_back(f);
         at.push_back(c);
+        capsules.push_back(capsule_of(c, n));
       } else {
-        flat.push_back(f);
+        flat.emplace_back(f, c);
       }
     }
     number_with_area = face.size();
-    for(face_descriptor f : flat) {
-      const std::array<Vec3, 3> c = corners(f, tm, vpm);
-      const std::size_t from = longest_side_start(c);
+    for(const auto& [f, c] : flat) {
+      const std::size_t from = longest_side_start(c), to = (from + 1) % 3;
       face.push_back(f);
-      at.push_back({{c[from], c[(from + 1) % 3], c[(from + 1) % 3]}});
+      at.push_back({{c[from], c[to], c[to]}});
+      capsules.push_back(capsule_of(at.back(), Vec3{{0, 0, 0}}));
     }
-    for(const auto& c : at)
-      capsules.push_back(capsule_of(c));
   }
 
-  static Capsule capsule_of(const std::array<Vec3, 3>& c)
+  /// The capsule of the triangle of corners c and normal n = (c1 - c0) x (c2 - c0).
+  static Capsule capsule_of(const std::array<Vec3, 3>& c, const Vec3& n)
   {
     const std::size_t from = longest_side_start(c), to = (from + 1) % 3, other = (from + 2) % 3;
     const Vec3 side = difference(c[to], c[from]);
     const double length = std::sqrt(dot(side, side));
-    Capsule capsule{c[from], side, length, 0};
+    Capsule capsule{c[from], side, length, 0, from, false};
     if(length > 0)
       for(double& x : capsule.direction)
         x /= length;
@@ -119,8 +120,8 @@ struct Searched_faces
     capsule.reach = std::sqrt(dot(off, off));
     // CGAL's test starts from the triangle's plane, of normal (c0 - c2) x (c1 - c2): its
     // direction is off by about 2^-52 / sin(angle at c2), far below the margin of
-    // meets() if that sine is above 2^-10
-    const Vec3 a = difference(c[0], c[2]), b = difference(c[1], c[2]), n = cross(a, b);
+    // meets() if that sine is above 2^-10 (n is that normal, up to rounding)
+    const Vec3 a = difference(c[0], c[2]), b = difference(c[1], c[2]);
     capsule.well_shaped = dot(n, n) >= std::ldexp(dot(a, a) * dot(b, b), -20);
     return capsule;
   }
@@ -179,9 +180,6 @@ public:
     return i;
   }
 
-  static Key key(const std::array<std::int64_t, 3>& i) { return i; }
-  static std::array<std::int64_t, 3> index_of(const Key& key) { return key; }
-
   /// The box of the cubes from `first` to `last` (inclusive) along each axis.
   CGAL::Bbox_3 box(const std::array<std::int64_t, 3>& first, const std::array<std::int64_t, 3>& last) const
   {
@@ -202,7 +200,8 @@ class Nearest_face_search
   using Kernel = CGAL::Simple_cartesian<double>;
   using Faces = Searched_faces<TriangleMesh, PointMap>;
   using face_descriptor = typename Faces::face_descriptor;
-  using Index = std::array<std::int64_t, 3>;
+  using Index = Cube_grid::Key;
+  using Cube_faces = std::pair<std::uint32_t, std::uint32_t>; // a range of cube_faces_
 
 public:
   struct Hit
@@ -359,7 +358,7 @@ private:
       if(last[d] - first[d] > last[axis] - first[axis])
         axis = d;
     if(last[axis] == first[axis]) {
-      registered.emplace_back(Cube_grid::key(first), i);
+      registered.emplace_back(first, i);
       return registered.size() <= budget_;
     }
     const std::int64_t middle = first[axis] + (last[axis] - first[axis]) / 2;
@@ -387,8 +386,7 @@ private:
     const auto point = [](const Vec3& x) { return Kernel::Point_3(x[0], x[1], x[2]); };
     if(as_triangle)
       return CGAL::do_intersect(Kernel::Triangle_3(point(c[0]), point(c[1]), point(c[2])), widened);
-    const std::size_t from = longest_side_start(c); // the capsule's side
-    const Vec3 &start = c[from], &end = c[(from + 1) % 3];
+    const Vec3 &start = c[capsule.from], &end = c[(capsule.from + 1) % 3]; // the capsule's side
     return start == end ? CGAL::do_overlap(widened, point(start).bbox())
                         : CGAL::do_intersect(Kernel::Segment_3(point(start), point(end)), widened);
   }
@@ -420,12 +418,9 @@ private:
 
   void scan_all_cubes(const Vec3& q, Nearest& best) const
   {
-    for(const auto& cube : cubes_) {
-      const Index i = Cube_grid::index_of(cube.first);
-      if(squared_distance_to_cube(q, i) <= squared(best.limit()))
-        for(std::uint32_t k = cube.second.first; k < cube.second.second; ++k)
-          consider(q, cube_faces_[k], best);
-    }
+    for(const auto& cube : cubes_)
+      if(squared_distance_to_cube(q, cube.first) <= squared(best.limit()))
+        consider_faces_of(cube.second, q, best);
   }
 
   double squared_distance_to_cube(const Vec3& q, const Index& i) const
@@ -440,10 +435,14 @@ private:
 
   void scan_cube(const Vec3& q, const Index& i, Nearest& best) const
   {
-    const auto found = cubes_.find(Cube_grid::key(i));
-    if(found == cubes_.end())
-      return;
-    for(std::uint32_t k = found->second.first; k < found->second.second; ++k)
+    const auto found = cubes_.find(i);
+    if(found != cubes_.end())
+      consider_faces_of(found->second, q, best);
+  }
+
+  void consider_faces_of(const Cube_faces& cube, const Vec3& q, Nearest& best) const
+  {
+    for(std::uint32_t k = cube.first; k < cube.second; ++k)
       consider(q, cube_faces_[k], best);
   }
 
@@ -483,8 +482,7 @@ private:
   Vec3 low_, high_;
   double extent_ = 0;
   Cube_grid grid_;
-  std::unordered_map<Cube_grid::Key, std::pair<std::uint32_t, std::uint32_t>, Cube_grid::Key_hash>
-      cubes_; // ranges of cube_faces_
+  std::unordered_map<Cube_grid::Key, Cube_faces, Cube_grid::Key_hash> cubes_;
   std::vector<std::uint32_t> cube_faces_;
 };
 

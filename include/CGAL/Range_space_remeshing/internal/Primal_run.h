@@ -197,20 +197,14 @@ template <class TriangleMesh, class RangeMap, class FaceRange>
 double extent_of_faces(const TriangleMesh& tm, const RangeMap& range_map, const FaceRange& faces)
 {
   constexpr int D = range_dimension<RangeMap>();
-  std::array<double, D> low, high;
-  low.fill(std::numeric_limits<double>::infinity());
-  high.fill(-std::numeric_limits<double>::infinity());
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> corners;
   for(auto f : faces)
-    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm)) {
-      const auto& x = get(range_map, v);
-      for(int q = 0; q < D; ++q) {
-        low[q] = (std::min)(low[q], double(x[q]));
-        high[q] = (std::max)(high[q], double(x[q]));
-      }
-    }
+    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      corners.push_back(v);
+  const auto box = mapped_box_of<D>(range_map, corners);
   double extent = 0;
   for(int q = 0; q < D; ++q)
-    extent = (std::max)(extent, high[q] - low[q]);
+    extent = (std::max)(extent, box[1][q] - box[0][q]);
   return extent;
 }
 
