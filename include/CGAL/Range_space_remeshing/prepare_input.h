@@ -7,6 +7,7 @@
 #define CGAL_RANGE_SPACE_REMESHING_PREPARE_INPUT_H
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/internal/Polygon_splitting.h>
 #include <CGAL/Range_space_remeshing/internal/Soup_check.h>
 #include <CGAL/Range_space_remeshing/internal/Soup_to_mesh.h>
 
@@ -15,13 +16,9 @@
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/boost/graph/helpers.h>
 
-#include <boost/container_hash/hash.hpp>
-
 #include <algorithm>
-#include <cmath>
 #include <cstddef>
 #include <string>
-#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -178,82 +175,6 @@ void repair_soup(PointRange& points, PolygonRange& polygons, Input_repair_statis
                            CGAL::parameters::visitor(Counting_orientation_visitor(&statistics)));
 }
 
-using Index_pairs = std::unordered_set<std::pair<std::size_t, std::size_t>, boost::hash<std::pair<std::size_t, std::size_t>>>;
-
-/// The edges of the soup's polygons, each as its two point indices in increasing order.
-template <class PolygonRange>
-Index_pairs polygon_edges(const PolygonRange& polygons)
-{
-  Index_pairs edges;
-  edges.reserve(2 * polygons.size());
-  for(const auto& polygon : polygons)
-    for(std::size_t i = 0; i < polygon.size(); ++i) {
-      const std::size_t a = polygon[i], b = polygon[(i + 1) % polygon.size()];
-      edges.emplace((std::min)(a, b), (std::max)(a, b));
-    }
-  return edges;
-}
-
-/// Whether a quadrilateral of `points` is split along its diagonal p[0]p[2]: the
-/// shorter one, unless it is an edge already or another quadrilateral's diagonal
-/// (two quadrilaterals around a vertex of valence 2 both find that diagonal shorter:
-/// split along it, they would give one triangle twice). `taken` holds the edges and
-/// the diagonals chosen so far, and gets this one.
-template <class PointRange, class Polygon>
-bool split_along_first_diagonal(const PointRange& points, const Polygon& p,
-                                Index_pairs& taken)
-{
-  const auto key = [](std::size_t a, std::size_t b) { return std::make_pair((std::min)(a, b), (std::max)(a, b)); };
-  // both lengths compared exactly: a squared length computed apart can overflow
-  bool first = CGAL::compare_distance(points[p[0]], points[p[2]], points[p[1]], points[p[3]]) != CGAL::LARGER;
-  if(taken.count(first ? key(p[0], p[2]) : key(p[1], p[3])) && !taken.count(first ? key(p[1], p[3]) : key(p[0], p[2])))
-    first = !first;
-  taken.insert(first ? key(p[0], p[2]) : key(p[1], p[3]));
-  return first;
-}
-
-/// Splits every polygon of the soup into triangles, in the soup: a quadrilateral
-/// along a diagonal (see above), a larger polygon into a fan from its first corner.
-/// Not CGAL's `triangulate_faces()`: on a non-planar polygon whose projection crosses
-/// itself its constrained triangulation can run without end (found by the fuzzers
-/// on a quadrilateral), and it falls back to hole filling, whose time grows as the
-/// cube of the corners. A split that still breaks the mesh (a fan's diagonal that
-/// is an edge already) is then repaired like any other defect. Returns the polygons
-/// split.
-template <class PointRange, class PolygonRange>
-std::size_t split_polygons(const PointRange& points, PolygonRange& polygons)
-{
-  const bool has_quadrilaterals =
-      std::any_of(polygons.begin(), polygons.end(), [](const auto& polygon) { return polygon.size() == 4; });
-  Index_pairs taken; // edges, and diagonals chosen
-  if(has_quadrilaterals)
-    taken = polygon_edges(polygons);
-  std::size_t split = 0;
-  const std::size_t count = polygons.size();
-  for(std::size_t f = 0; f < count; ++f) {
-    auto& polygon = polygons[f];
-    const std::size_t n = polygon.size();
-    if(n <= 3)
-      continue;
-    ++split;
-    std::vector<std::vector<std::size_t>> triangles;
-    if(n == 4) {
-      const auto& p = polygon;
-      if(split_along_first_diagonal(points, p, taken))
-        triangles = {{p[0], p[1], p[2]}, {p[0], p[2], p[3]}};
-      else
-        triangles = {{p[1], p[2], p[3]}, {p[1], p[3], p[0]}};
-    } else {
-      for(std::size_t i = 1; i + 1 < n; ++i)
-        triangles.push_back({polygon[0], polygon[i], polygon[i + 1]});
-    }
-    polygon.assign(triangles[0].begin(), triangles[0].end()); // before emplace_back() may move it
-    for(std::size_t t = 1; t < triangles.size(); ++t)
-      polygons.emplace_back(triangles[t].begin(), triangles[t].end());
-  }
-  return split;
-}
-
 /// Whether some triangle of `mesh` has corners that are not on one line (exactly).
 template <class TriangleMesh>
 bool has_a_non_degenerate_face(const TriangleMesh& mesh)
@@ -310,9 +231,10 @@ with `Input_repair::REPAIR`, CGAL's repair runs: points at the same position are
 merged, polygons with a repeated corner or fewer than 3 corners and duplicated
 polygons are removed, unused points are removed, the polygons are oriented
 (`CGAL::Polygon_mesh_processing::orient_polygon_soup()`), which splits non-manifold
-vertices and edges. Polygons are split into triangles first (a quadrilateral along its
-shorter diagonal, a larger polygon into a fan from its first corner, which on a
-non-convex polygon overlaps itself: a touching sheet for the remesher), and a repaired
+vertices and edges. Polygons are split into triangles first: a convex one (in the
+plane where it is widest) as a quadrilateral along its shorter diagonal or a larger
+polygon as a fan from its first corner, a non-convex one by a constrained Delaunay
+triangulation inside it (a polygon whose projection crosses itself, as a fan); a repaired
 closed surface is oriented outward (`CGAL::Polygon_mesh_processing::orient()`). Every change is counted in the
 returned statistics. Since points are only merged where they coincide or copied,
 every vertex of `mesh` sits at the position of some input point: an attribute of
