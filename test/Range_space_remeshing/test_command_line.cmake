@@ -581,6 +581,18 @@ run(0 flipped_out.off --stats flipped.off flipped_out.off)
 expect_json(ON input_repairs repaired)
 expect_json(0 output_border_cycles)
 
+# where the reader takes a file otherwise than it says (colours out of 0..255, counts
+# on the keyword's line): one line each on stderr, and in --stats
+set(bright_points "1 0 0 300 0 0\n-1 0 0 0 0 0\n0 1 0 0 0 0\n0 -1 0 0 0 0\n0 0 1 0 0 0\n0 0 -1 0 0 -1\n")
+file(WRITE ${WORK_DIR}/bright.off "COFF 6 8 0\n${bright_points}${octahedron_faces}")
+run(0 bright_out.off --stats --cell-size 0.1 bright.off bright_out.off)
+expect_json(${octahedron_vertices} output_vertices)
+expect_json("2 colour values are outside 0..255: clamped" input_notes 0)
+if(NOT err MATCHES "bright.off': 2 colour values are outside 0..255: clamped\n")
+  message(SEND_ERROR "the clamped colours were not said on stderr: ${err}")
+  math(EXPR failures "${failures} + 1")
+endif()
+
 # an ASCII STL that starts with "beginsolid" (some CAD exporters)
 string(REPLACE "solid soup" "beginsolid soup" begin_stl "${stl}")
 file(WRITE ${WORK_DIR}/begin.stl "${begin_stl}")

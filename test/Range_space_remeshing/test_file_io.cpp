@@ -14,10 +14,12 @@
 #include <CGAL/Range_space_remeshing/prepare_input.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 
+#include <CGAL/IO/STL.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -155,7 +157,9 @@ void test_bombs_are_refused_before_allocation()
   std::string stl(80, ' ');
   const std::uint32_t count = 4000000000u;
   stl.append(reinterpret_cast<const char*>(&count), 4);
-  stl.append(100, '\0');
+  stl.append(100, '\0'); // two records: the file's count, not the header's, is read
+  CHECK_EQ(parse(stl, "stl").polygons.size(), std::size_t(2));
+  stl.append(1, '\0'); // not a whole number of records: the header's count is the word
   CHECK(refuses(stl, "stl"));
   CHECK(refuses("f 1 2 3\n", "obj"));
   CHECK(refuses("v 0 0 0\nf 1 0 1\n", "obj"));
@@ -237,7 +241,17 @@ void test_repairs_are_counted()
 
 // ----------------------------------------------------------------- writer
 
-double triangulated_area(const Mesh& mesh) { return PMP::area(rsr_io::internal::triangulated_copy(mesh)); }
+/// The area of `mesh`'s faces split into triangles as the STL writer splits them.
+double triangulated_area(const Mesh& mesh)
+{
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> triangles;
+  rsr_io::internal::triangle_soup_of(mesh, points, triangles);
+  double area = 0;
+  for(const auto& t : triangles)
+    area += std::sqrt(CGAL::squared_area(points[t[0]], points[t[1]], points[t[2]]));
+  return area;
+}
 
 void test_written_files_read_back()
 {
@@ -325,6 +339,68 @@ void test_written_files_read_back()
       CHECK(refused);
       CHECK(!std::ifstream("joined.stl"));
     }
+  }
+
+  // an L-shaped face, whose first corner is next to its reflex one: a fan from there
+  // folded over the notch (area 3.5 written for 3, the file overlapping itself)
+  {
+    Mesh l;
+    std::vector<Mesh::Vertex_index> corners;
+    for(const auto& [x, y] : std::vector<std::pair<double, double>>{{0, 1}, {0, 0}, {2, 0}, {2, 2}, {1, 2}, {1, 1}})
+      corners.push_back(l.add_vertex(Point(x, y, 0)));
+    l.add_face(corners);
+    {
+      rsr_io::Output_files files;
+      files.add(l, "l.stl", static_cast<const Color_map*>(nullptr), rsr_io::Write_options{false, 17});
+      files.commit();
+    }
+    std::vector<Point> points;
+    std::vector<std::vector<std::size_t>> triangles;
+    CHECK(CGAL::IO::read_STL("l.stl", points, triangles));
+    double l_area = 0;
+    for(const auto& t : triangles)
+      l_area += std::sqrt(CGAL::squared_area(points[t[0]], points[t[1]], points[t[2]]));
+    CHECK_EQ(triangles.size(), std::size_t(4));
+    CHECK(std::abs(l_area - 3) <= 1e-12);
+    std::remove("l.stl");
+  }
+
+  // a name that is a symbolic link: written through it, as a shell's redirection does
+  // (the link was replaced by a file, and a link to /dev/full "written" with success);
+  // a device or a directory is never replaced
+  {
+    namespace fs = std::filesystem;
+    std::error_code error;
+    fs::remove("target.off", error);
+    fs::remove("link.off", error);
+    std::ofstream("target.off") << "old";
+    fs::create_symlink("target.off", "link.off");
+    {
+      rsr_io::Output_files files;
+      files.add(sphere, "link.off", static_cast<const Color_map*>(nullptr), rsr_io::Write_options{false, 17});
+      files.commit();
+    }
+    CHECK(fs::is_symlink("link.off"));
+    Mesh through;
+    CHECK(CGAL::IO::read_OFF("target.off", through) && num_faces(through) == num_faces(sphere));
+    fs::remove("link.off");
+    fs::remove("target.off");
+    fs::create_symlink("/dev/null", "null.off");
+    fs::create_directory("directory.off", error);
+    for(const char* name : {"null.off", "directory.off"}) {
+      bool refused = false;
+      try {
+        rsr_io::Output_files files;
+        files.add(sphere, name, static_cast<const Color_map*>(nullptr), rsr_io::Write_options{false, 17});
+        files.commit();
+      } catch(const rsr_io::Write_error&) {
+        refused = true;
+      }
+      CHECK(refused);
+    }
+    CHECK(fs::is_symlink("null.off") && fs::is_character_file("/dev/null") && fs::is_directory("directory.off"));
+    fs::remove("null.off");
+    fs::remove("directory.off");
   }
 
   // a file that cannot be written leaves nothing behind and touches nothing
@@ -462,6 +538,54 @@ void test_ply_texture_names()
   CHECK(red.colors.size() == 3 && red.colors[0][0] == 255 && red.colors[0][1] == 51 && red.colors[0][2] == 255);
 }
 
+/// Files whose words mean other than the reader took them (hostile round 9): 16-bit
+/// colours, float colours in 0..255 and colours out of range (all white, or
+/// clamped, without a word), a binary STL whose header counts fewer triangles than it
+/// holds (0: "no face"), an OFF with its counts on the keyword's line (refused).
+void test_files_read_as_they_mean()
+{
+  auto ply = [](const std::string& type, const std::string& colours) {
+    return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+           "property " + type + " red\nproperty " + type + " green\nproperty " + type + " blue\n"
+           "element face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0 " + colours +
+           "\n1 0 0 " + colours + "\n0 1 0 " + colours + "\n3 0 1 2\n";
+  };
+  const auto sixteen = parse(ply("ushort", "65535 32768 0"), "ply");
+  CHECK(sixteen.colors.size() == 3 && sixteen.colors[0] == (std::array<unsigned char, 3>{{255, 128, 0}}));
+  CHECK(sixteen.notes.empty());
+  const auto bytes_as_floats = parse(ply("float", "255 127.6 0"), "ply");
+  CHECK(bytes_as_floats.colors.size() == 3 && bytes_as_floats.colors[1] == (std::array<unsigned char, 3>{{255, 128, 0}}));
+  CHECK_EQ(bytes_as_floats.notes.size(), std::size_t(1));
+  const auto unit_floats = parse(ply("double", "1 0.5 0"), "ply");
+  CHECK(unit_floats.colors.size() == 3 && unit_floats.colors[2] == (std::array<unsigned char, 3>{{255, 128, 0}}));
+  CHECK(unit_floats.notes.empty());
+  const auto out_of_range = parse("COFF\n3 1 0\n0 0 0 300 -5 10\n1 0 0 1 2 3\n0 1 0 4 5 6\n3 0 1 2\n", "off");
+  CHECK(out_of_range.colors.size() == 3 && out_of_range.colors[0] == (std::array<unsigned char, 3>{{255, 0, 10}}));
+  CHECK(out_of_range.notes.size() == 1 && out_of_range.notes[0].find("2 colour values") == 0);
+
+  const auto counts_on_keyword_line = parse("OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "off");
+  CHECK(counts_on_keyword_line.points.size() == 3 && counts_on_keyword_line.polygons.size() == 1);
+
+  auto binary_stl = [](std::uint32_t count, std::size_t triangles, std::size_t extra_bytes) {
+    std::string stl(80, ' ');
+    stl.append(reinterpret_cast<const char*>(&count), 4);
+    for(std::size_t t = 0; t < triangles; ++t) {
+      const float record[12] = {0, 0, 1, 0, 0, float(t), 1, 0, float(t), 0, 1, float(t)};
+      stl.append(reinterpret_cast<const char*>(record), 48);
+      stl.append(2, '\0');
+    }
+    return stl.append(extra_bytes, '\0');
+  };
+  for(const std::uint32_t header : {0u, 1u}) {
+    const auto all = parse(binary_stl(header, 2, 0), "stl");
+    CHECK(all.polygons.size() == 2 && all.notes.size() == 1);
+  }
+  const auto trailing = parse(binary_stl(1, 1, 10), "stl");
+  CHECK(trailing.polygons.size() == 1 && trailing.notes.size() == 1);
+  CHECK(parse(binary_stl(2, 2, 0), "stl").notes.empty());
+  CHECK(refuses(binary_stl(3, 2, 10), "stl"));
+}
+
 int main()
 {
   test_formats_agree();
@@ -471,5 +595,6 @@ int main()
   test_texture_coordinates();
   test_bad_obj_corners_are_refused();
   test_ply_texture_names();
+  test_files_read_as_they_mean();
   return report("test_file_io");
 }

@@ -47,6 +47,7 @@ struct Input
   // edges where the file's colours or UVs change (see attribute_seams.h)
   std::size_t opened_seam_edges = 0, blended_seam_edges = 0;
   bool creases_opened = false; // with the seams, for --sharp-angle
+  std::vector<std::string> reader_notes; // where the file was taken otherwise than it says
 };
 
 using rsr_io::Position;
@@ -261,10 +262,19 @@ inline Input read_input(const std::string& path, bool strict, double sharp_angle
   input.repairs.merged_points -= (std::min)(input.repairs.merged_points, soup.uv_seam_copies);
   add_vertex_values(soup, values, input);
   open_seams(soup, values, corners, sharp_angle, input);
+  input.reader_notes = std::move(soup.notes);
   const auto repaired = std::chrono::steady_clock::now();
   input.read_ms = std::chrono::duration<double, std::milli>(read - start).count();
   input.repair_ms = std::chrono::duration<double, std::milli>(repaired - read).count();
   return input;
+}
+
+/// One line on stderr for each place where the reader took the file otherwise than
+/// it says.
+inline void report_reader_notes(const std::string& path, const Input& input)
+{
+  for(const std::string& note : input.reader_notes)
+    std::cerr << "range_space_remesh: " << quote(path) << ": " << note << std::endl;
 }
 
 /// One line on stderr when the input needed repairs.

@@ -157,6 +157,7 @@ int run_program(int argc, char** argv)
   io.uv_missing_corners = read.uv_missing_corners;
   io.opened_seam_edges = read.opened_seam_edges;
   io.blended_seam_edges = read.blended_seam_edges;
+  io.reader_notes = read.reader_notes;
   const Mesh input = with_creases_opened(std::move(read.mesh), options, read.creases_opened);
   // once, the input read: the runs of --target-vertices and --preserve-topology share it
   const std::size_t cap = vertex_cap(options);
@@ -174,6 +175,7 @@ int run_program(int argc, char** argv)
   const auto write_start = std::chrono::steady_clock::now();
   write_outputs(options, input, output, defects);
   io.write_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - write_start).count();
+  report_reader_notes(options.input, read);
   report_repairs(options.input, read.repairs);
   report_dropped_uvs(options.input, read);
   report_blended_seams(options.input, read);

@@ -72,6 +72,10 @@ struct Polygon_soup
   std::size_t uv_missing_corners = 0;
   /// points added by Uv_seams::SPLIT
   std::size_t uv_seam_copies = 0;
+  /// where the reader took the file otherwise than it says (a binary STL's triangle
+  /// count that is not the file's, colours out of their range): one line each for the
+  /// user
+  std::vector<std::string> notes;
 };
 
 /// What to do with a point that an OBJ file's faces give several texture coordinates
@@ -235,14 +239,56 @@ bool parse_number(std::string_view word, Number& value)
 inline bool to_double(std::string_view word, double& value) { return parse_number(word, value); }
 inline bool to_integer(std::string_view word, long long& value) { return parse_number(word, value); }
 
-/// A colour channel from a file: floats in [0, 1], integers in 0..255 (clamped).
-inline unsigned char color_channel(double value, bool is_float)
+/// The vertex colours of a file as it gives them, made 0..255 once the last is read:
+/// floats in [0, 1] unless one exceeds 1 (some writers give floats in 0..255, which
+/// scaled by 255 all came out white), integers in 0..255 or, 16-bit ones, in 0..65535;
+/// a value still out of 0..255 is clamped. Both are said in a note.
+class Color_channels
 {
-  const double scaled = is_float ? value * 255. : value;
-  if(!(scaled > 0))
-    return 0;
-  return scaled >= 255 ? 255 : static_cast<unsigned char>(std::lround(scaled));
-}
+public:
+  /// The colour of the next point: `integer_range` is 255 or 65535 for integers, 0 for floats.
+  void add(const std::array<double, 3>& values, double integer_range)
+  {
+    values_.push_back({{float(values[0]), float(values[1]), float(values[2])}});
+    integer_range_.push_back(integer_range == 0 ? 0 : integer_range == 255 ? 1 : 2);
+    if(integer_range == 0)
+      for(double x : values)
+        floats_above_one_ = floats_above_one_ || x > 1;
+    any_ = true;
+  }
+  /// The next point has no colour (some writers leave one out): black.
+  void add_none()
+  {
+    values_.push_back({{0, 0, 0}});
+    integer_range_.push_back(1);
+  }
+  bool any() const { return any_; }
+
+  /// The colours in 0..255, and the notes on how they were taken.
+  std::vector<std::array<unsigned char, 3>> take(std::vector<std::string>& notes) const
+  {
+    std::vector<std::array<unsigned char, 3>> colors(values_.size());
+    std::size_t clamped = 0;
+    for(std::size_t i = 0; i < values_.size(); ++i)
+      for(int c = 0; c < 3; ++c) {
+        const double scale = integer_range_[i] == 1 ? 1 : integer_range_[i] == 2 ? 255. / 65535 : floats_above_one_ ? 1 : 255;
+        const double x = values_[i][std::size_t(c)] * scale;
+        clamped += !(x >= 0 && x <= 255);
+        colors[i][std::size_t(c)] = x > 0 ? static_cast<unsigned char>(std::lround((std::min)(x, 255.))) : 0;
+      }
+    if(floats_above_one_)
+      notes.push_back("its colours are numbers with a decimal point, some above 1: taken in 0..255, not in [0, 1]");
+    if(clamped > 0)
+      notes.push_back(std::to_string(clamped) + (clamped == 1 ? " colour value is" : " colour values are") +
+                      " outside 0..255: clamped");
+    return colors;
+  }
+
+private:
+  std::vector<std::array<float, 3>> values_;
+  std::vector<std::uint8_t> integer_range_; // 0: a float, 1: 0..255, 2: 0..65535
+  bool floats_above_one_ = false, any_ = false;
+};
 
 /// Reserves room for `count` items, but never more than the bytes left could hold
 /// at `minimum_bytes` each: a count in a file is a promise, not a fact.
@@ -281,8 +327,10 @@ inline Polygon_soup read_off(std::string_view text, const std::string& name)
              has_dimension = take("n");
   if(!prefix.empty())
     fail("unknown OFF keyword '" + std::string(keyword) + "'");
+  const Text_cursor after_keyword = in; // the counts may follow on the keyword's line
   if(in.word_in_line('#') == "BINARY")
     fail("binary OFF is not supported (convert it to text OFF, PLY or STL)");
+  in = after_keyword;
   std::vector<long long> header; // [dimension,] vertices, faces, edges
   const std::size_t wanted = has_dimension ? 3 : 2;      // the edge count is optional
   while(header.size() < wanted && !in.at_end()) {
@@ -309,8 +357,7 @@ inline Polygon_soup read_off(std::string_view text, const std::string& name)
   Polygon_soup soup;
   reserve_at_most(soup.points, std::uint64_t(vertex_count), in.bytes_left(), 6);
   const std::size_t position_size = homogeneous ? 4 : 3;
-  bool any_color = false;
-  std::vector<std::array<unsigned char, 3>> colors;
+  Color_channels colors;
   for(long long v = 0; v < vertex_count; ++v) {
     next_content_line();
     if(in.at_end())
@@ -328,7 +375,6 @@ inline Polygon_soup read_off(std::string_view text, const std::string& name)
     if(has_normal)
       for(int c = 0; c < 3; ++c)
         in.word_in_line('#');
-    std::array<unsigned char, 3> color{{0, 0, 0}};
     if(has_color && !in.at_line_end('#')) { // r g b [a], integers in 0..255 or floats in [0, 1]
       // (a vertex without any colour, which some writers leave, keeps black)
       std::array<std::string_view, 3> words{{in.word_in_line('#'), in.word_in_line('#'), in.word_in_line('#')}};
@@ -339,19 +385,18 @@ inline Polygon_soup read_off(std::string_view text, const std::string& name)
           fail("vertex " + std::to_string(v) + " has a colour that is not a number");
         is_float = is_float || words[std::size_t(c)].find_first_of(".eE") != std::string_view::npos;
       }
-      for(int c = 0; c < 3; ++c) {
+      for(int c = 0; c < 3; ++c)
         if(!std::isfinite(values[std::size_t(c)]))
           fail("vertex " + std::to_string(v) + " has a colour that is not a finite number");
-        color[std::size_t(c)] = color_channel(values[std::size_t(c)], is_float);
-      }
-      any_color = true;
+      colors.add(values, is_float ? 0 : 255);
+    } else {
+      colors.add_none();
     }
-    colors.push_back(color);
     (void)has_texture; // texture coordinates, if any, are the rest of the line
     in.next_line();
   }
-  if(any_color)
-    soup.colors = std::move(colors);
+  if(colors.any())
+    soup.colors = colors.take(soup.notes);
   reserve_at_most(soup.polygons, std::uint64_t(face_count), in.bytes_left(), 8);
   for(long long f = 0; f < face_count; ++f) {
     next_content_line();
@@ -407,6 +452,13 @@ inline std::size_t ply_size(Ply_type type)
 }
 
 inline bool is_float(Ply_type type) { return type == Ply_type::FLOAT32 || type == Ply_type::FLOAT64; }
+
+/// The range of a colour channel of this type (see Color_channels): 0 for floats,
+/// 0..65535 for 16-bit integers, 0..255 for the others.
+inline double color_range_of(Ply_type type)
+{
+  return is_float(type) ? 0 : type == Ply_type::UINT16 || type == Ply_type::INT16 ? 65535 : 255;
+}
 
 struct Ply_property
 {
@@ -606,8 +658,8 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
     fail("its PLY header has no format line");
 
   Polygon_soup soup;
-  bool has_vertices = false, has_faces = false, any_color = false;
-  std::vector<std::array<unsigned char, 3>> colors;
+  bool has_vertices = false, has_faces = false;
+  Color_channels colors;
   Ply_values values(text.substr(std::size_t(header.position() - text.data())), format);
   for(const Ply_element& element : elements) {
     const bool is_vertex = element.name == "vertex" && !has_vertices;
@@ -632,8 +684,6 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
     const bool textured = is_vertex && texture[0] >= 0 && texture[1] >= 0;
     if(is_vertex) {
       reserve_at_most(soup.points, element.count, values.bytes_left(), minimum);
-      if(colored)
-        reserve_at_most(colors, element.count, values.bytes_left(), minimum);
       if(textured)
         reserve_at_most(soup.uvs, element.count, values.bytes_left(), minimum);
     }
@@ -641,7 +691,8 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
       reserve_at_most(soup.polygons, element.count, values.bytes_left(), minimum);
     for(std::uint64_t e = 0; e < element.count; ++e) {
       std::array<double, 3> point{};
-      std::array<unsigned char, 3> color{};
+      std::array<double, 3> color{};
+      double color_range = 255; // 0 for floats, see Color_channels
       std::array<double, 2> uv{};
       for(std::size_t p = 0; p < element.properties.size(); ++p) {
         const Ply_property& property = element.properties[p];
@@ -655,7 +706,8 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
             if(channel[c] == int(p)) {
               if(colored && !std::isfinite(value))
                 fail("its vertex " + std::to_string(e) + " has a colour that is not a finite number");
-              color[std::size_t(c)] = color_channel(value, is_float(property.type));
+              color[std::size_t(c)] = value;
+              color_range = color_range_of(property.type);
             }
           }
           for(int c = 0; c < 2; ++c)
@@ -689,17 +741,16 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
       if(is_vertex) {
         soup.points.push_back(point);
         if(colored)
-          colors.push_back(color);
+          colors.add(color, color_range);
         if(textured)
           soup.uvs.push_back(uv);
       }
     }
-    any_color = any_color || colored;
   }
   if(!has_vertices)
     fail("it has no PLY vertex element");
-  if(any_color)
-    soup.colors = std::move(colors);
+  if(colors.any())
+    soup.colors = colors.take(soup.notes);
   return soup;
 }
 
@@ -827,8 +878,7 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_
   };
   Text_cursor in(text);
   Polygon_soup soup;
-  std::vector<std::array<unsigned char, 3>> colors;
-  bool any_color = false;
+  Color_channels colors;
   std::vector<std::array<double, 2>> texture_coordinates;
   std::vector<std::vector<std::size_t>> corner_uvs; // per polygon, per corner: a `vt`, or 0 for none
   std::size_t normals = 0;                          // `vn` lines: only their number is checked
@@ -860,16 +910,14 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_
       if(n < 3)
         fail(line, "a vertex has fewer than 3 coordinates");
       soup.points.push_back({{x[0], x[1], x[2]}});
-      std::array<unsigned char, 3> color{};
-      if(n >= 6) { // x y z r g b, colours in [0, 1]
-        for(int c = 0; c < 3; ++c) {
+      if(n >= 6) { // x y z r g b, colours in [0, 1] (or 0..255: Color_channels)
+        for(int c = 0; c < 3; ++c)
           if(!std::isfinite(x[3 + c]))
             fail(line, "a vertex colour is not a finite number");
-          color[std::size_t(c)] = color_channel(x[3 + c], true);
-        }
-        any_color = true;
+        colors.add({{x[3], x[4], x[5]}}, 0);
+      } else {
+        colors.add_none();
       }
-      colors.push_back(color);
     } else if(keyword == "f") {
       std::vector<std::size_t> polygon, uvs;
       for(std::string_view w; !(w = in.word_in_line('#')).empty();) {
@@ -892,8 +940,8 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_
       corner_uvs.push_back(std::move(uvs));
     }
   }
-  if(any_color)
-    soup.colors = std::move(colors);
+  if(colors.any())
+    soup.colors = colors.take(soup.notes);
   if(!texture_coordinates.empty())
     uvs_of_corners(texture_coordinates, corner_uvs, seams, soup);
   return soup;
@@ -940,6 +988,29 @@ private:
   std::unordered_map<Position, std::size_t, Position_hash> index_;
 };
 
+/// How many triangles a binary STL file holds: the count in its header, unless the
+/// records after it are a whole number of triangles, and another one (exporters that
+/// stream their triangles leave 0 there); a note says which was taken, and how many
+/// bytes after the triangles are left.
+inline std::uint32_t binary_stl_triangles(std::string_view text, const std::string& name,
+                                          std::vector<std::string>& notes)
+{
+  std::uint32_t count = 0;
+  std::memcpy(&count, text.data() + 80, 4); // STL is little endian, as the hosts we build for
+  const std::uint64_t records = (text.size() - 84) / 50, left = (text.size() - 84) % 50;
+  if(left == 0 && records != count && records <= UINT32_MAX) {
+    notes.push_back("its binary STL header counts " + std::to_string(count) + " triangles, the file holds " +
+                    std::to_string(records) + ": all " + std::to_string(records) + " are read");
+    return std::uint32_t(records);
+  }
+  if(count > records)
+    throw Read_error(name + ": its binary STL triangle count (" + std::to_string(count) + ") is larger than the file");
+  if(84 + 50 * std::uint64_t(count) < text.size())
+    notes.push_back("its " + std::to_string(text.size() - 84 - 50 * std::uint64_t(count)) +
+                    " bytes after the " + std::to_string(count) + " triangles its binary STL header counts are ignored");
+  return count;
+}
+
 /// The triangles of an STL file, their corners at the same position joined.
 inline Polygon_soup read_stl(std::string_view text, const std::string& name)
 {
@@ -949,10 +1020,7 @@ inline Polygon_soup read_stl(std::string_view text, const std::string& name)
   if(is_binary_stl(text)) {
     if(text.size() < 84)
       fail("not an STL file (too short for a binary STL, and no 'solid' keyword)");
-    std::uint32_t count = 0;
-    std::memcpy(&count, text.data() + 80, 4); // STL is little endian, as the hosts we build for
-    if(84 + 50 * std::uint64_t(count) > text.size())
-      fail("its binary STL triangle count (" + std::to_string(count) + ") is larger than the file");
+    const std::uint32_t count = binary_stl_triangles(text, name, soup.notes);
     soup.polygons.reserve(count);
     for(std::uint32_t t = 0; t < count; ++t) {
       const char* record = text.data() + 84 + 50 * std::size_t(t) + 12; // after the normal

@@ -13,7 +13,7 @@
 #include "mesh_formats.h"
 
 #include <CGAL/IO/Color.h>
-#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/Range_space_remeshing/internal/Polygon_splitting.h>
 #include <CGAL/boost/graph/IO/OBJ.h>
 #include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/boost/graph/IO/PLY.h>
@@ -25,6 +25,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <iomanip>
 #include <map>
 #include <ostream>
@@ -127,32 +128,36 @@ inline mode_t new_file_mode()
   return mode;
 }
 
-/// Splits every face that is not a triangle into a fan: always possible, whatever
-/// the geometry (where the constrained triangulation gives up).
-template <class PolygonMesh>
-void fan_triangulate(PolygonMesh& mesh)
+/// The points of `mesh` (a `Surface_mesh`) and its faces split into triangles, as a soup (STL stores
+/// triangles only), by the split the input gets (`prepare_input()`): a non-convex
+/// face by a triangulation inside it, where a fan would fold over its reflex corners.
+template <class Mesh>
+void triangle_soup_of(const Mesh& mesh, std::vector<typename Mesh::Point>& points,
+                      std::vector<std::vector<std::size_t>>& triangles)
 {
-  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> polygons;
-  for(auto f : faces(mesh))
-    if(degree(f, mesh) > 3)
-      polygons.push_back(f);
-  for(auto f : polygons) {
-    auto h = halfedge(f, mesh);
-    for(std::size_t corners = degree(f, mesh); corners > 3; --corners) // each split cuts off a triangle
-      h = prev(CGAL::Euler::split_face(h, next(next(h, mesh), mesh), mesh), mesh);
+  std::vector<std::size_t> position(mesh.num_vertices()); // by index, removed vertices included
+  points.clear();
+  for(auto v : vertices(mesh)) {
+    position[v.idx()] = points.size();
+    points.push_back(mesh.point(v));
   }
+  triangles.clear();
+  for(auto f : faces(mesh)) {
+    triangles.emplace_back();
+    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      triangles.back().push_back(position[v.idx()]);
+  }
+  CGAL::Range_space_remeshing::internal::split_polygons(points, triangles);
 }
 
-/// A copy of `mesh` whose faces are all triangles (STL stores triangles only): each
-/// polygon split into a fan from its first corner. Not CGAL's triangulation, which on
-/// a non-planar polygon of the primal remesh can cascade into exact intersections for
-/// minutes; the remesh's polygons are small and nearly convex, which fans suit.
-template <class Mesh>
-Mesh triangulated_copy(const Mesh& mesh)
+/// Writes `mesh` as STL, its faces split into triangles (see above).
+template <class Mesh, class NamedParameters>
+bool write_triangles_STL(std::ostream& out, const Mesh& mesh, const NamedParameters& np)
 {
-  Mesh triangles = mesh;
-  fan_triangulate(triangles);
-  return triangles;
+  std::vector<typename Mesh::Point> points;
+  std::vector<std::vector<std::size_t>> triangles;
+  triangle_soup_of(mesh, points, triangles);
+  return CGAL::IO::write_STL(out, points, triangles, np);
 }
 
 /// How many vertices of `mesh` sit where another one does once their coordinates
@@ -270,7 +275,7 @@ bool write_mesh(std::ostream& out, const Mesh& mesh, const std::string& ext, con
                  : write_mesh(out, internal::with_st_properties(mesh, *uvs), ext, colors, options); // PLY: s t
   }
   switch(format->format) {
-  case Mesh_format::STL: return CGAL::IO::write_STL(out, internal::triangulated_copy(mesh), precision);
+  case Mesh_format::STL: return internal::write_triangles_STL(out, mesh, precision);
   case Mesh_format::OBJ: return CGAL::IO::write_OBJ(out, mesh, precision);
   case Mesh_format::OFF:
     return colors ? CGAL::IO::write_OFF(out, mesh, precision.vertex_color_map(*colors))
@@ -281,6 +286,31 @@ bool write_mesh(std::ostream& out, const Mesh& mesh, const std::string& ext, con
   }
   return false; // not reached: every format is above
 }
+
+namespace internal {
+
+/// The file writing `path` replaces: the file a symbolic link names (as a shell's
+/// redirection writes through it; replaced, the link would be gone and the file it
+/// names unchanged) or `path` itself. Throws Write_error if that is something other
+/// than a regular file (a directory, a device, a pipe), which a rename would replace.
+inline std::string destination_of(const std::string& path)
+{
+  namespace fs = std::filesystem;
+  std::error_code error;
+  std::string destination = path;
+  if(fs::is_symlink(fs::symlink_status(path, error))) {
+    const fs::path target = fs::weakly_canonical(fs::absolute(path, error), error);
+    if(!error)
+      destination = target.string();
+  }
+  const fs::file_status status = fs::status(destination, error);
+  if(fs::exists(status) && !fs::is_regular_file(status))
+    throw Write_error("cannot write '" + path + "': it is not a regular file" +
+                      (destination == path ? std::string() : " ('" + destination + "')"));
+  return destination;
+}
+
+} // namespace internal
 
 /// The files a run writes, each first under a temporary name; `commit()` renames
 /// them all into place, the destructor removes those not committed.
@@ -310,14 +340,16 @@ public:
                                        : " vertices of the mesh would coincide with others") +
                           " in STL, which stores positions only" +
                           (options.binary ? " (as floats)" : "") + "; write .off, .ply or .obj");
+    const std::string destination = internal::destination_of(path);
     int slot = -1;
     internal::Pending_files& pending = internal::pending_files();
     for(int i = 0; i < internal::Pending_files::capacity && slot < 0; ++i)
       if(!pending.used[i])
         slot = i;
-    const auto slash = path.find_last_of('/');
+    const auto slash = destination.find_last_of('/');
     // short, whatever the destination's name: a name of 255 bytes stays writable
-    const std::string temporary = (slash == std::string::npos ? "" : path.substr(0, slash + 1)) + ".rsr-XXXXXX";
+    const std::string temporary =
+        (slash == std::string::npos ? "" : destination.substr(0, slash + 1)) + ".rsr-XXXXXX";
     if(slot < 0 || temporary.size() >= internal::Pending_files::path_size)
       throw Write_error("cannot write '" + path + "': path too long");
     std::vector<char> name(temporary.begin(), temporary.end());
@@ -331,7 +363,7 @@ public:
         throw Write_error("cannot write '" + path + "': " + std::strerror(errno));
       std::memcpy(pending.paths[slot], name.data(), name.size());
       pending.used[slot] = 1;
-      files_.push_back({std::string(name.data()), path, slot});
+      files_.push_back({std::string(name.data()), destination, path, slot});
     }
     ::fchmod(fd, internal::new_file_mode());
     bool ok = false;
@@ -355,7 +387,7 @@ public:
     internal::Signals_held held;
     for(File& f : files_) {
       if(std::rename(f.temporary.c_str(), f.destination.c_str()) != 0)
-        throw Write_error("cannot write '" + f.destination + "': " + std::strerror(errno));
+        throw Write_error("cannot write '" + f.path + "': " + std::strerror(errno));
       internal::pending_files().used[f.slot] = 0;
       f.temporary.clear();
     }
@@ -376,7 +408,7 @@ public:
 private:
   struct File
   {
-    std::string temporary, destination;
+    std::string temporary, destination, path; // path: as the user named it
     int slot;
   };
 

@@ -74,6 +74,13 @@ inline void check_output_names(const Options& options)
   if(!options.topology_report.empty() && !is_supported_format(options.topology_report))
     fail("cannot write " + quote(options.topology_report) + ": unsupported format (use " + rsr_io::supported_extensions() + ")");
   check_output_paths(options);
+  try { // a device or a directory at a name (or where its link points) is not replaced
+    rsr_io::internal::destination_of(options.output);
+    if(!options.topology_report.empty())
+      rsr_io::internal::destination_of(options.topology_report);
+  } catch(const rsr_io::Write_error& e) {
+    fail(e.what());
+  }
 }
 
 /// Writes OUTPUT (with its vertex colours and texture coordinates) and the --topology-report file: every file

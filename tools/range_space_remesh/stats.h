@@ -55,6 +55,7 @@ struct Io_times
   std::size_t uv_seam_vertices = 0, uv_missing_corners = 0;
   // edges where the file's colours or UVs change: opened (closed surface) or blended
   std::size_t opened_seam_edges = 0, blended_seam_edges = 0;
+  std::vector<std::string> reader_notes; // where the file was taken otherwise than it says
 };
 
 inline void print_stats(const Options& options, const Mesh& input, const Mesh& output, const RSR::Remesh_statistics& all,
@@ -130,6 +131,7 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                               {"written", carried && rsr_io::format_of(options.output)->stores_uvs},
                               {"seam_vertices", io.uv_seam_vertices},
                               {"corners_without", io.uv_missing_corners}};
+  j["input_notes"] = io.reader_notes;
   j["attribute_seams"] = {{"opened_edges", io.opened_seam_edges}, {"blended_edges", io.blended_seam_edges}};
   j["input_repairs"] = {{"repaired", repairs.repaired()},
                         {"merged_points", repairs.merged_points},
