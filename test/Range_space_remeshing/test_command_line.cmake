@@ -593,6 +593,16 @@ if(NOT err MATCHES "bright.off': 2 colour values are outside 0..255: clamped\n")
   math(EXPR failures "${failures} + 1")
 endif()
 
+# a report the run cannot fill (hostile round 9, T1: an empty report was written)
+run(2 seeded_out.off --seeded --topology-report seeded_report.off octahedron.off seeded_out.off)
+expect_message("--topology-report needs the topology check" "--topology-report with --seeded")
+if(EXISTS ${WORK_DIR}/seeded_report.off)
+  message(SEND_ERROR "--topology-report with --seeded wrote the report")
+  math(EXPR failures "${failures} + 1")
+endif()
+run(2 unchecked_out.off --no-topology-check --topology-report unchecked_report.off octahedron.off unchecked_out.off)
+expect_message("--no-topology-check skips" "--topology-report with --no-topology-check")
+
 # an ASCII STL that starts with "beginsolid" (some CAD exporters)
 string(REPLACE "solid soup" "beginsolid soup" begin_stl "${stl}")
 file(WRITE ${WORK_DIR}/begin.stl "${begin_stl}")
@@ -805,6 +815,22 @@ else()
       math(EXPR failures "${failures} + 1")
     endif()
   endif()
+  # the other signals that end a program, as the temporary file is created: it dies of
+  # the signal, and the file is removed (hostile round 9, P2: SIGXFSZ from a file size
+  # limit, SIGPIPE, SIGALRM, SIGUSR1 left it)
+  foreach(signal USR1 XFSZ ALRM PIPE QUIT)
+    file(REMOVE ${WORK_DIR}/at_${signal}.off)
+    execute_process(COMMAND ${CMAKE_COMMAND} -E env "ASAN_OPTIONS=${asan_options}"
+                            ${STRACE} -f -qq -o /dev/null -e trace=fchmod -e inject=fchmod:signal=${signal}
+                            ${CLI} ${elephant} at_${signal}.off
+                    RESULT_VARIABLE code OUTPUT_QUIET ERROR_QUIET WORKING_DIRECTORY ${WORK_DIR})
+    file(GLOB leftovers ${WORK_DIR}/.rsr-*)
+    if(code EQUAL 0 OR leftovers OR EXISTS ${WORK_DIR}/at_${signal}.off)
+      message(SEND_ERROR "SIG${signal} while writing: exit '${code}', leftovers '${leftovers}'")
+      math(EXPR failures "${failures} + 1")
+      file(REMOVE ${leftovers})
+    endif()
+  endforeach()
   # two Ctrl-C after the renames (at the writes of the repair line to stderr): too late,
   # the run ends as it would have, exit 0; it used to exit 130 saying nothing was written
   set(late_err ${WORK_DIR}/after_renaming.err)

@@ -541,7 +541,8 @@ void test_ply_texture_names()
 /// Files whose words mean other than the reader took them (hostile round 9): 16-bit
 /// colours, float colours in 0..255 and colours out of range (all white, or
 /// clamped, without a word), a binary STL whose header counts fewer triangles than it
-/// holds (0: "no face"), an OFF with its counts on the keyword's line (refused).
+/// holds (0: "no face"), an ASCII STL in capitals (taken as binary), an OFF with its
+/// counts on the keyword's line (refused).
 void test_files_read_as_they_mean()
 {
   auto ply = [](const std::string& type, const std::string& colours) {
@@ -563,6 +564,10 @@ void test_files_read_as_they_mean()
   CHECK(out_of_range.colors.size() == 3 && out_of_range.colors[0] == (std::array<unsigned char, 3>{{255, 0, 10}}));
   CHECK(out_of_range.notes.size() == 1 && out_of_range.notes[0].find("2 colour values") == 0);
 
+  const auto capitals = parse("SOLID X\nFACET NORMAL 0 0 1\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 1 0 0\nVERTEX 0 1 0\n"
+                              "ENDLOOP\nENDFACET\nENDSOLID X\n",
+                              "stl"); // taken as binary: "too short"
+  CHECK(capitals.points.size() == 3 && capitals.polygons.size() == 1);
   const auto counts_on_keyword_line = parse("OFF 3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "off");
   CHECK(counts_on_keyword_line.points.size() == 3 && counts_on_keyword_line.polygons.size() == 1);
 

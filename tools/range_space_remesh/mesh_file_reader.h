@@ -249,7 +249,7 @@ public:
   /// The colour of the next point: `integer_range` is 255 or 65535 for integers, 0 for floats.
   void add(const std::array<double, 3>& values, double integer_range)
   {
-    values_.push_back({{float(values[0]), float(values[1]), float(values[2])}});
+    values_.push_back(values);
     integer_range_.push_back(integer_range == 0 ? 0 : integer_range == 255 ? 1 : 2);
     if(integer_range == 0)
       for(double x : values)
@@ -285,7 +285,7 @@ public:
   }
 
 private:
-  std::vector<std::array<float, 3>> values_;
+  std::vector<std::array<double, 3>> values_;
   std::vector<std::uint8_t> integer_range_; // 0: a float, 1: 0..255, 2: 0..65535
   bool floats_above_one_ = false, any_ = false;
 };
@@ -949,9 +949,29 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_
 
 // ------------------------------------------------------------------------ STL
 
+/// Whether `word` is `keyword` (lower case) in any case: STL's keywords are lower case,
+/// some exporters write them in capitals.
+inline bool is_keyword(std::string_view word, std::string_view keyword)
+{
+  return word.size() == keyword.size() &&
+         std::equal(word.begin(), word.end(), keyword.begin(), [](char a, char b) {
+           return (a >= 'A' && a <= 'Z' ? char(a - 'A' + 'a') : a) == b;
+         });
+}
+
+/// `text` in lower case (ASCII letters only).
+inline std::string lower_case(std::string_view text)
+{
+  std::string lower(text);
+  for(char& c : lower)
+    if(c >= 'A' && c <= 'Z')
+      c = char(c - 'A' + 'a');
+  return lower;
+}
+
 /// Whether an STL file is binary: its size is that of its triangle count (some binary
-/// files start with "solid" too), or its start is not text with STL's keywords (some
-/// exporters write "beginsolid" or nothing before the first facet).
+/// files start with "solid" too), or its start is not text with STL's keywords, in any
+/// case (some exporters write "beginsolid" or nothing before the first facet).
 inline bool is_binary_stl(std::string_view text)
 {
   if(text.size() >= 84) {
@@ -964,9 +984,9 @@ inline bool is_binary_stl(std::string_view text)
   if(start.find('\0') != std::string_view::npos)
     return true;
   Text_cursor in(text);
-  const std::string_view first = in.word();
-  return first.find("solid") == std::string_view::npos && first != "facet" &&
-         start.find("vertex") == std::string_view::npos;
+  const std::string first = lower_case(in.word()), lower_start = lower_case(start);
+  return first.find("solid") == std::string::npos && first != "facet" &&
+         lower_start.find("vertex") == std::string::npos;
 }
 
 /// The index of each distinct position: STL gives every triangle its own three points,
@@ -1037,7 +1057,7 @@ inline Polygon_soup read_stl(std::string_view text, const std::string& name)
   Text_cursor in(text);
   std::vector<std::size_t> loop;
   for(std::string_view w; !(w = in.word()).empty();) {
-    if(w == "vertex") {
+    if(is_keyword(w, "vertex")) {
       std::array<double, 3> p{};
       for(double& x : p)
         if(!to_double(in.word(), x))
@@ -1045,7 +1065,7 @@ inline Polygon_soup read_stl(std::string_view text, const std::string& name)
       if(loop.size() >= 3)
         fail("an STL facet has more than 3 vertices");
       loop.push_back(vertices.index_of(p));
-    } else if(w == "endloop" || w == "endfacet") {
+    } else if(is_keyword(w, "endloop") || is_keyword(w, "endfacet")) {
       if(!loop.empty())
         soup.polygons.push_back(std::move(loop));
       loop.clear();

@@ -5,7 +5,7 @@
 // its destination (created exclusively: an existing file or a link planted at its
 // name is never followed), and every file of a run is renamed into place only once
 // all of them are written, so that a failing run creates and overwrites nothing.
-// The temporary files are removed on every error path and on SIGINT / SIGTERM.
+// The temporary files are removed on every error path and on the signals that end the program.
 
 #ifndef RANGE_SPACE_REMESHING_TOOLS_MESH_FILE_WRITER_H
 #define RANGE_SPACE_REMESHING_TOOLS_MESH_FILE_WRITER_H
@@ -88,6 +88,11 @@ inline void remove_pending_files()
     }
 }
 
+/// The signals whose default action ends the program, which would leave the
+/// temporary files behind (SIGXFSZ: the file size limit, met while writing).
+inline constexpr int terminating_signals[] = {SIGINT,  SIGTERM,   SIGHUP,  SIGQUIT,   SIGPIPE, SIGXFSZ,
+                                              SIGXCPU, SIGALRM,   SIGUSR1, SIGUSR2,   SIGVTALRM, SIGPROF};
+
 extern "C" inline void remove_pending_files_and_die(int signal_number)
 {
   remove_pending_files();
@@ -95,7 +100,7 @@ extern "C" inline void remove_pending_files_and_die(int signal_number)
   std::raise(signal_number);
 }
 
-/// Holds SIGINT, SIGTERM and SIGHUP for its lifetime: a signal that arrives meanwhile
+/// Holds the terminating signals for its lifetime: a signal that arrives meanwhile
 /// is handled after, so that a temporary file is never created unregistered and a set
 /// of files is renamed all or none.
 class Signals_held
@@ -105,7 +110,7 @@ public:
   {
     sigset_t held;
     sigemptyset(&held);
-    for(int s : {SIGINT, SIGTERM, SIGHUP})
+    for(int s : terminating_signals)
       sigaddset(&held, s);
     ::pthread_sigmask(SIG_BLOCK, &held, &before_); // the thread that writes (the program has one)
   }
@@ -188,14 +193,19 @@ std::size_t vertices_joined_by_stl(const Mesh& mesh, bool binary)
 
 } // namespace internal
 
-/// Removes the temporary files of unfinished writes when the program is interrupted
-/// (SIGINT, SIGTERM, SIGHUP), then dies of the signal as it would have.
+/// Removes the temporary files of unfinished writes when a signal ends the program
+/// (internal::terminating_signals, those not ignored), then dies of the signal as it
+/// would have.
 inline void remove_temporary_files_on_signals()
 {
   internal::pending_files();
   internal::new_file_mode();
-  for(int s : {SIGINT, SIGTERM, SIGHUP})
+  for(int s : internal::terminating_signals) {
+    struct sigaction current;
+    if(::sigaction(s, nullptr, &current) == 0 && current.sa_handler == SIG_IGN)
+      continue; // ignored by who started the program (SIGPIPE, SIGHUP under nohup): kept so
     std::signal(s, internal::remove_pending_files_and_die);
+  }
 }
 
 /// How a mesh is written.

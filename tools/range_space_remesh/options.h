@@ -109,7 +109,8 @@ inline const char* const usage =
     "                          --seeded, which cannot check it); a warning is printed\n"
     "                          on stderr when the check finds a defect\n"
     "  --topology-report FILE  write the input faces where the topology check found\n"
-    "                          defects to FILE, a mesh (.off .obj .ply .stl)\n"
+    "                          defects to FILE, a mesh (.off .obj .ply .stl); not with\n"
+    "                          --seeded or --no-topology-check\n"
     "  --time-limit S        stop (exit 2, nothing written) if the remesh takes more\n"
     "                          than S seconds\n"
     "  --quiet               no progress line (shown on a terminal for runs over 1 s)\n"
@@ -209,6 +210,9 @@ inline void refuse_ignored_options(const Options& options, const std::set<std::s
     fail("--color-weight is for the maps with colours (position-normal-color...); the map " + map + " has none");
   if(given.count("--cell-size") && given.count("--target-vertices"))
     fail("--cell-size and --target-vertices exclude each other: --target-vertices chooses the cell size");
+  if(!options.topology_report.empty() && (options.seeded || !options.check_topology))
+    fail(std::string("--topology-report needs the topology check, which ") +
+         (options.seeded ? "--seeded cannot run" : "--no-topology-check skips"));
 }
 
 inline Options parse_arguments(int argc, char** argv)
