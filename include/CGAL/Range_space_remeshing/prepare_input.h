@@ -43,9 +43,12 @@ struct Input_repair_statistics
   std::size_t removed_degenerate_polygons = 0;
   /// polygons with the same corners as another one, removed
   std::size_t removed_duplicate_polygons = 0;
-  /// polygons reversed to orient their connected piece consistently
+  /// polygons reversed against the file to orient their connected piece consistently
+  /// (each counted once, in the mesh returned: a polygon reversed for consistency and
+  /// then back to face outward is not)
   std::size_t reversed_polygons = 0;
-  /// triangles reversed so that a repaired closed surface faces outward
+  /// triangles reversed against the file so that a repaired closed surface faces
+  /// outward, and not counted in `reversed_polygons`
   std::size_t reversed_to_face_outward = 0;
   /// edges with more than two polygons (they become borders)
   std::size_t non_manifold_edges = 0;
@@ -79,14 +82,16 @@ enum class Input_repair
 
 namespace internal {
 
-/// Counts what `orient_polygon_soup()` does (CGAL copies its visitor: counters by pointer).
+/// Counts what `orient_polygon_soup()` does, and marks the polygons it leaves reversed
+/// (CGAL copies its visitor: counters by pointer).
 struct Counting_orientation_visitor : public CGAL::Polygon_mesh_processing::Default_orientation_visitor
 {
   Input_repair_statistics* statistics;
-  explicit Counting_orientation_visitor(Input_repair_statistics* s) : statistics(s) {}
+  std::vector<bool>* reversed; // by polygon
+  Counting_orientation_visitor(Input_repair_statistics* s, std::vector<bool>* r) : statistics(s), reversed(r) {}
   void non_manifold_edge(std::size_t, std::size_t, std::size_t) { ++statistics->non_manifold_edges; }
   void duplicated_vertex(std::size_t, std::size_t) { ++statistics->split_non_manifold_points; }
-  void polygon_orientation_reversed(std::size_t) { ++statistics->reversed_polygons; }
+  void polygon_orientation_reversed(std::size_t polygon) { (*reversed)[polygon] = !(*reversed)[polygon]; }
 };
 
 /// Removes the points no polygon uses, keeping the others in their order.
@@ -162,17 +167,21 @@ void remove_degenerate_polygons(PolygonRange& polygons, Input_repair_statistics&
 
 /// The repairs of CGAL's polygon mesh processing, each counted: merge coinciding
 /// points, drop degenerate and duplicate polygons and unused points, orient the
-/// polygons and split the non-manifold vertices and edges.
+/// polygons and split the non-manifold vertices and edges. Returns, by polygon of
+/// the repaired soup, whether the orientation reversed it.
 template <class PointRange, class PolygonRange>
-void repair_soup(PointRange& points, PolygonRange& polygons, Input_repair_statistics& statistics)
+std::vector<bool> repair_soup(PointRange& points, PolygonRange& polygons, Input_repair_statistics& statistics)
 {
   namespace PMP = CGAL::Polygon_mesh_processing;
   statistics.merged_points += PMP::merge_duplicate_points_in_polygon_soup(points, polygons);
   remove_degenerate_polygons(polygons, statistics);
   statistics.removed_duplicate_polygons += PMP::merge_duplicate_polygons_in_polygon_soup(points, polygons);
   remove_isolated_points(points, polygons, statistics);
+  std::vector<bool> reversed(polygons.size(), false);
   PMP::orient_polygon_soup(points, polygons,
-                           CGAL::parameters::visitor(Counting_orientation_visitor(&statistics)));
+                           CGAL::parameters::visitor(Counting_orientation_visitor(&statistics, &reversed)));
+  statistics.reversed_polygons += std::size_t(std::count(reversed.begin(), reversed.end(), true));
+  return reversed;
 }
 
 /// Whether some triangle of `mesh` has corners that are not on one line (exactly).
@@ -191,7 +200,8 @@ bool has_a_non_degenerate_face(const TriangleMesh& mesh)
 /// Orients each closed piece of a repaired triangle mesh outward (the repair's
 /// orientation is consistent but arbitrary) and counts the triangles reversed.
 template <class TriangleMesh>
-void orient_outward(TriangleMesh& mesh, Input_repair_statistics& statistics)
+void orient_outward(TriangleMesh& mesh, const std::vector<bool>& reversed_by_repair,
+                    Input_repair_statistics& statistics)
 {
   if(!CGAL::is_closed(mesh))
     return; // CGAL's orient() needs a closed surface; an open one has no outside
@@ -212,7 +222,12 @@ void orient_outward(TriangleMesh& mesh, Input_repair_statistics& statistics)
     bool kept = false;
     for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
       kept = kept || (source(h, mesh) == u && target(h, mesh) == v);
-    statistics.reversed_to_face_outward += !kept;
+    // the faces are the repaired soup's polygons, in order: one reversed twice is as in the file
+    const bool by_repair = i - 1 < reversed_by_repair.size() && reversed_by_repair[i - 1];
+    if(!kept && by_repair)
+      --statistics.reversed_polygons;
+    else if(!kept)
+      ++statistics.reversed_to_face_outward;
   }
 }
 
@@ -264,6 +279,7 @@ Input_repair_statistics prepare_input(PointRange& points, PolygonRange& polygons
   statistics.triangulated_polygons = internal::split_polygons(points, polygons);
   internal::Soup_edges edges; // sorted by the last check, of the soup as it is then
   std::string problem = internal::soup_problem(points, polygons, edges);
+  std::vector<bool> reversed; // by polygon, by the repair's orientation
   if(problem == internal::coinciding_points) {
     // a mesh already, with points at the same position: joined where that closes seams
     // or a soup of separate polygons into a mesh, kept apart where it would not
@@ -275,7 +291,7 @@ Input_repair_statistics prepare_input(PointRange& points, PolygonRange& polygons
   if(!problem.empty()) {
     if(repair == Input_repair::REFUSE)
       throw Remeshing_error("the input is not an oriented 2-manifold mesh: " + problem);
-    internal::repair_soup(points, polygons, statistics);
+    reversed = internal::repair_soup(points, polygons, statistics);
     if(polygons.empty())
       throw Remeshing_error("the input has no face left after removing its degenerate faces");
     // points left at the same position are apart in the mesh: what CGAL's repair keeps
@@ -286,7 +302,7 @@ Input_repair_statistics prepare_input(PointRange& points, PolygonRange& polygons
   clear(mesh);
   internal::soup_to_mesh(points, polygons, edges, mesh);
   if(!problem.empty())
-    internal::orient_outward(mesh, statistics);
+    internal::orient_outward(mesh, reversed, statistics);
   if(!internal::has_a_non_degenerate_face(mesh))
     throw Remeshing_error("the input has no area: every face is degenerate (its corners on one line)");
   return statistics;
