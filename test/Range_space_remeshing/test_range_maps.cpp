@@ -13,6 +13,7 @@
 #include <CGAL/Range_space_remeshing/insert_crease_triangles.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
+#include <boost/property_map/function_property_map.hpp>
 
 #include <algorithm>
 #include <limits>
@@ -384,6 +385,24 @@ void test_crease_triangles()
             << euler_characteristic(remesh) << std::endl;
   CHECK_EQ(euler_characteristic(remesh), 2L);
   check_primal_normals_on_creases(creased);
+
+  // is_sharp_edge() is the rule insert_crease_triangles() uses: the same 36 edges at
+  // 30 degrees, none at 100 (the cube's sides meet at 90); with its own creases in
+  // edge_is_constrained_map, the same mesh
+  std::size_t sharp_at_30 = 0, sharp_at_100 = 0;
+  for(auto e : edges(cube)) {
+    sharp_at_30 += RSR::is_sharp_edge(e, cube, 30.0);
+    sharp_at_100 += RSR::is_sharp_edge(e, cube, 100.0, CGAL::parameters::vertex_point_map(get(CGAL::vertex_point, cube)));
+  }
+  CHECK_EQ(sharp_at_30, stats.feature_edges);
+  CHECK_EQ(sharp_at_100, std::size_t(0));
+  const auto is_crease = boost::make_function_property_map<Mesh::Edge_index, bool>(
+      [&cube](Mesh::Edge_index e) { return RSR::is_sharp_edge(e, cube, 30.0); });
+  Mesh creased_by_map;
+  const RSR::Crease_statistics by_map =
+      RSR::insert_crease_triangles(cube, creased_by_map, 0.0, CGAL::parameters::edge_is_constrained_map(is_crease));
+  CHECK_EQ(by_map.feature_edges, stats.feature_edges);
+  CHECK_EQ(num_faces(creased_by_map), num_faces(creased));
 }
 
 /// A primal vertex inside a crease strip or a corner triangle gets one side's normal,

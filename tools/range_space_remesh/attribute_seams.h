@@ -23,7 +23,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <unordered_map>
@@ -168,25 +167,6 @@ inline Attribute_seams find_attribute_seams(const Seam_values& values, const Cor
   return seams;
 }
 
-/// Whether the normals of the two faces of the edge of `h` make an angle above
-/// `sharp_angle` degrees: insert_crease_triangles()'s own rule for --sharp-angle, needed
-/// here because it takes either an angle or a set of edges, and the seams are edges.
-inline bool is_sharp(const Mesh& mesh, Mesh::Halfedge_index h, double sharp_angle)
-{
-  auto normal = [&](Mesh::Halfedge_index g) {
-    const K::Point_3 &a = mesh.point(source(g, mesh)), &b = mesh.point(target(g, mesh)),
-                     &c = mesh.point(target(next(g, mesh), mesh));
-    K::Vector_3 n = CGAL::cross_product(b - a, c - a);
-    // scaled first: the square of a huge or tiny component would overflow or underflow
-    const double largest = (std::max)({std::abs(n.x()), std::abs(n.y()), std::abs(n.z())});
-    if(!(largest > 0) || !std::isfinite(largest))
-      return n;
-    n = n / largest;
-    return n / std::sqrt(n.squared_length());
-  };
-  return normal(h) * normal(opposite(h, mesh)) < std::cos(sharp_angle * 3.14159265358979323846 / 180);
-}
-
 /// `mesh` with its seams (and its creases sharper than `sharp_angle` degrees, if not
 /// negative) opened; each vertex copy takes the values of the file's point at a corner
 /// of its side (of `point_at` its position's, where no corner tells). The first faces
@@ -197,7 +177,8 @@ Mesh open_attribute_seams(const Mesh& mesh, const Attribute_seams& seams, const 
                           const PointAt& point_at, double sharp_angle)
 {
   const auto is_crease = boost::make_function_property_map<Mesh::Edge_index, bool>([&](Mesh::Edge_index e) {
-    return seams.on_seam[e.idx()] || (sharp_angle >= 0 && is_sharp(mesh, halfedge(e, mesh), sharp_angle));
+    // the seams, and the creases by insert_crease_triangles()'s own rule
+    return seams.on_seam[e.idx()] || (sharp_angle >= 0 && RSR::is_sharp_edge(e, mesh, sharp_angle));
   });
   Mesh opened;
   RSR::insert_crease_triangles(mesh, opened, 0, CGAL::parameters::edge_is_constrained_map(is_crease));

@@ -25,6 +25,39 @@ namespace Range_space_remeshing {
 /*!
 \ingroup PkgRangeSpaceRemeshingRef
 
+returns whether the edge `e` of `tm` is sharper than `sharp_angle_degrees`: the unit
+normals of its two faces make an angle above it (a face without area has the zero
+normal, and its edges are sharp for any angle below 90 degrees). This is
+`insert_crease_triangles()`'s rule, for an `edge_is_constrained_map` that adds edges
+of one's own to the sharp ones.
+
+\param e an edge with a face on each side.
+\param tm a triangle mesh.
+\param sharp_angle_degrees the angle, in degrees.
+\param np optional named parameters:
+  \cgalNamedParamsBegin
+    \cgalParamNBegin{vertex_point_map}
+      \cgalParamDefault{`get(CGAL::vertex_point, tm)`}
+    \cgalParamNEnd
+  \cgalNamedParamsEnd
+*/
+template <class TriangleMesh, class NamedParameters = CGAL::parameters::Default_named_parameters>
+bool is_sharp_edge(typename boost::graph_traits<TriangleMesh>::edge_descriptor e, const TriangleMesh& tm,
+                   double sharp_angle_degrees, const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  static_assert(internal::check_named_parameters<struct is_sharp_edge_np, NamedParameters,
+                                                 CGAL::internal_np::vertex_point_t>());
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, tm));
+  const auto h = halfedge(e, tm);
+  return internal::is_sharper_than(h, tm, vpm, internal::cosine_of_degrees(sharp_angle_degrees));
+}
+
+/*!
+\ingroup PkgRangeSpaceRemeshingRef
+
 prepares a mesh with sharp creases for maps that use normals (section 8 of the paper).
 A normal field must be continuous for the Gauss map and the position + normal maps; at
 a crease it is not. This function writes into `out` the same surface where every
@@ -61,7 +94,6 @@ Crease_statistics insert_crease_triangles(const TriangleMesh& tm, TriangleMesh& 
   using CGAL::parameters::is_default_parameter;
   using halfedge_descriptor = typename boost::graph_traits<TriangleMesh>::halfedge_descriptor;
   using edge_descriptor = typename boost::graph_traits<TriangleMesh>::edge_descriptor;
-  using internal::Vec3;
   static_assert(internal::check_named_parameters<struct insert_crease_triangles_np, NamedParameters,
                                                  CGAL::internal_np::vertex_point_t,
                                                  CGAL::internal_np::edge_is_constrained_t>());
@@ -73,17 +105,12 @@ Crease_statistics insert_crease_triangles(const TriangleMesh& tm, TriangleMesh& 
   constexpr bool user_features = !is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value;
   const auto user_map = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
                                          CGAL::Constant_property_map<edge_descriptor, bool>(false));
-  auto face_normal = [&](halfedge_descriptor h) {
-    const Vec3 a = internal::to_vec3(get(vpm, source(h, tm))), b = internal::to_vec3(get(vpm, target(h, tm))),
-               c = internal::to_vec3(get(vpm, target(next(h, tm), tm)));
-    return internal::normalized(internal::cross(internal::difference(b, a), internal::difference(c, a)));
-  };
-  const double cos_sharp = std::cos(sharp_angle_degrees * 3.14159265358979323846 / 180);
+  const double cos_sharp = internal::cosine_of_degrees(sharp_angle_degrees);
   auto is_feature = [&](halfedge_descriptor h) {
     if constexpr(user_features)
       return bool(get(user_map, edge(h, tm)));
     else
-      return internal::dot(face_normal(h), face_normal(opposite(h, tm))) < cos_sharp;
+      return internal::is_sharper_than(h, tm, vpm, cos_sharp);
   };
 
   auto vertex_index = CGAL::get_initialized_vertex_index_map(tm, np);

@@ -218,12 +218,13 @@ void orient_outward(TriangleMesh& mesh, const std::vector<bool>& reversed_by_rep
   }
   std::size_t i = 0;
   for(auto f : faces(mesh)) { // faces keep their descriptors: a reversed one has its edge backwards
-    const auto [u, v] = first_edges[i++];
+    const std::size_t face = i++;
+    const auto [u, v] = first_edges[face];
     bool kept = false;
     for(auto h : CGAL::halfedges_around_face(halfedge(f, mesh), mesh))
       kept = kept || (source(h, mesh) == u && target(h, mesh) == v);
     // the faces are the repaired soup's polygons, in order: one reversed twice is as in the file
-    const bool by_repair = i - 1 < reversed_by_repair.size() && reversed_by_repair[i - 1];
+    const bool by_repair = face < reversed_by_repair.size() && reversed_by_repair[face];
     if(!kept && by_repair)
       --statistics.reversed_polygons;
     else if(!kept)

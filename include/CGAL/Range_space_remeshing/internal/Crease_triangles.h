@@ -15,18 +15,36 @@
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 #include <CGAL/Range_space_remeshing/internal/Soup_to_mesh.h>
+#include <CGAL/Range_space_remeshing/internal/Vec3.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <vector>
 
 namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
+
+inline double cosine_of_degrees(double degrees) { return std::cos(degrees * 3.14159265358979323846 / 180); }
+
+/// Whether the unit normals of the two faces of the edge of `h` make an angle whose
+/// cosine is below `cos_sharp` (a face without area has the zero normal).
+template <class TriangleMesh, class VertexPointMap>
+bool is_sharper_than(typename boost::graph_traits<TriangleMesh>::halfedge_descriptor h, const TriangleMesh& tm,
+                     const VertexPointMap& vpm, double cos_sharp)
+{
+  auto face_normal = [&](typename boost::graph_traits<TriangleMesh>::halfedge_descriptor g) {
+    const Vec3 a = to_vec3(get(vpm, source(g, tm))), b = to_vec3(get(vpm, target(g, tm))),
+               c = to_vec3(get(vpm, target(next(g, tm), tm)));
+    return normalized(cross(difference(b, a), difference(c, a)));
+  };
+  return dot(face_normal(h), face_normal(opposite(h, tm))) < cos_sharp;
+}
 
 template <class TriangleMesh, class VertexPointMap, class VertexIndexMap, class HalfedgeIndexMap>
 class Crease_triangles

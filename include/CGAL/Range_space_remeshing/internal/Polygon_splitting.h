@@ -73,14 +73,6 @@ int axis_most_normal(const std::vector<Point>& corners)
   return axis;
 }
 
-/// Whether the polygon is convex seen along `Projection`'s axis (CGAL's test:
-/// consistent turns, once around).
-template <class Projection, class Point>
-bool is_convex_seen_along(const std::vector<Point>& corners)
-{
-  return CGAL::is_convex_2(corners.begin(), corners.end(), Projection());
-}
-
 /// Marks the faces of `cdt` inside its constraints (a simple polygon): those not
 /// reached from the infinite face without crossing a constraint.
 template <class Cdt>
@@ -143,12 +135,13 @@ Index_triangles triangulate_simple_polygon(const std::vector<Point>& corners)
 }
 
 /// The triangles of a polygon with a reflex corner, seen along `Projection`'s axis,
-/// or empty if it is convex there or not simple (it crosses itself: no triangulation
-/// stays inside it, and CGAL's would have to construct the crossings).
+/// or empty if it is convex there (CGAL's test: consistent turns, once around) or not
+/// simple (it crosses itself: no triangulation stays inside it, and CGAL's would have
+/// to construct the crossings).
 template <class Projection, class Point>
 Index_triangles triangulate_if_non_convex(const std::vector<Point>& corners)
 {
-  if(is_convex_seen_along<Projection>(corners) ||
+  if(CGAL::is_convex_2(corners.begin(), corners.end(), Projection()) ||
      !CGAL::is_simple_2(corners.begin(), corners.end(), Projection()))
     return {};
   return triangulate_simple_polygon<Projection>(corners);
