@@ -593,8 +593,39 @@ void test_files_read_as_they_mean()
   CHECK(refuses(binary_stl(3, 2, 10), "stl"));
 }
 
+/// OBJ statements broken over lines by a final '\\' (the specification's continuation:
+/// some exporters break long faces so) are read as one; they were refused.
+void test_obj_line_continuations()
+{
+  const std::string points = "v 0 0 0\nv 1 0 0\nv 0 1 \\\n  0\nv 0 0 1\n";
+  const auto split_face = parse(points + "f 1 3 \\\n 2\nf 1 2\\\n4\nf 1 4 3 \\\n\\\n\nf 2 3 4\n", "obj");
+  CHECK_EQ(split_face.points.size(), std::size_t(4));
+  CHECK(split_face.points.size() == 4 && split_face.points[2] == (rsr_io::Position{{0, 1, 0}}));
+  CHECK_EQ(split_face.polygons.size(), std::size_t(4));
+  CHECK(split_face.polygons.size() == 4 && split_face.polygons[0] == (std::vector<std::size_t>{0, 2, 1}) &&
+        split_face.polygons[1] == (std::vector<std::size_t>{0, 1, 3}) &&
+        split_face.polygons[2] == (std::vector<std::size_t>{0, 3, 2}));
+  // a statement the reader does not read word by word ("vn") goes on as well: its second
+  // line is not a statement of its own
+  const auto normal = parse("vn 0 0 \\\n 1\n" + points + "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n", "obj");
+  CHECK_EQ(normal.polygons.size(), std::size_t(4));
+  // a backslash inside a line, or before a comment, is no continuation
+  CHECK(refuses(points + "f 1 \\ 3 2\n", "obj"));
+}
+
+/// A PLY file with a UTF-8 byte-order mark (some Windows editors add one) is read.
+void test_ply_byte_order_mark()
+{
+  const std::string ply = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                          "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                          "0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n";
+  CHECK_EQ(parse("\xEF\xBB\xBF" + ply, "ply").polygons.size(), std::size_t(1));
+}
+
 int main()
 {
+  test_obj_line_continuations();
+  test_ply_byte_order_mark();
   test_formats_agree();
   test_bombs_are_refused_before_allocation();
   test_repairs_are_counted();

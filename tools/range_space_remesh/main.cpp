@@ -34,6 +34,8 @@
 #include <CGAL/assertions_behaviour.h>
 #include <CGAL/version.h>
 
+#include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -112,9 +114,33 @@ RSR::Remesh_statistics remesh_with_progress(const Mesh& input, double h, Options
   return stats;
 }
 
-/// Refuses a remesh no mesh file can hold.
-void check_remesh(const Mesh& output, const RSR::Remesh_statistics& stats)
+/// Whether the input's vertex normals all agree (to 1e-9 in each coordinate): the
+/// input is flat, and a map of normals alone maps it to a point.
+bool has_one_normal(const Mesh& input)
 {
+  const Input_normals normals(input, true);
+  std::array<double, 3> low{{1, 1, 1}}, high{{-1, -1, -1}};
+  for(auto v : vertices(input)) {
+    const auto n = get(normals, v);
+    for(std::size_t q = 0; q < 3; ++q) {
+      low[q] = (std::min)(low[q], n[q]);
+      high[q] = (std::max)(high[q], n[q]);
+    }
+  }
+  for(std::size_t q = 0; q < 3; ++q)
+    if(!(high[q] - low[q] <= 1e-9))
+      return false;
+  return true;
+}
+
+/// Refuses a remesh no mesh file can hold.
+void check_remesh(const Mesh& input, const Mesh& output, const RSR::Remesh_statistics& stats, const Options& options)
+{
+  const bool normals_only = options.map->uses_normals && options.map->dimension == 3;
+  if(num_faces(output) == 0 && normals_only && has_one_normal(input))
+    fail("the remesh is empty: the input is flat, and --map " + std::string(options.map->name) +
+         " maps it to a single point, which no cell size resolves; use a map with positions (identity, "
+         "position-normal)");
   if(num_faces(output) == 0)
     fail("the remesh is empty: at this cell size the surface is not resolved (" +
          std::to_string(stats.primal.dropped_pieces + stats.dual.dropped_pieces) +
@@ -170,7 +196,7 @@ int run_program(int argc, char** argv)
   stop_if_interrupted(); // after the remesh's last report
   if(options.target_vertices > 0) // the size found
     h = stats.primal.cell_size;
-  check_remesh(output, stats);
+  check_remesh(input, output, stats, options);
 
   const auto write_start = std::chrono::steady_clock::now();
   write_outputs(options, input, output, defects);
@@ -178,6 +204,7 @@ int run_program(int argc, char** argv)
   report_reader_notes(options.input, read);
   report_repairs(options.input, read.repairs);
   report_dropped_uvs(options.input, read);
+  report_unwritten_values(options, input);
   report_blended_seams(options.input, read);
   warn_about_topology(stats, options, defects);
   if(options.stats)

@@ -239,43 +239,53 @@ bool parse_number(std::string_view word, Number& value)
 inline bool to_double(std::string_view word, double& value) { return parse_number(word, value); }
 inline bool to_integer(std::string_view word, long long& value) { return parse_number(word, value); }
 
+/// The range a file's colour channel is in: its numbers are scaled from it to 0..255.
+enum class Color_range : std::uint8_t
+{
+  UNIT_OR_BYTE, // floats: [0, 1], or 0..255 if some exceed 1 (decided once all are read)
+  BYTE,         // integers in 0..255
+  SIXTEEN_BITS  // 16-bit integers in 0..65535
+};
+
 /// The vertex colours of a file as it gives them, made 0..255 once the last is read:
 /// floats in [0, 1] unless one exceeds 1 (some writers give floats in 0..255, which
 /// scaled by 255 all came out white), integers in 0..255 or, 16-bit ones, in 0..65535;
-/// a value still out of 0..255 is clamped. Both are said in a note.
+/// a value still out of 0..255 is clamped. Both are said in a note. Kept as doubles:
+/// floats would round some colours differently (0.9 * 255).
 class Color_channels
 {
 public:
-  /// The colour of the next point: `integer_range` is 255 or 65535 for integers, 0 for floats.
-  void add(const std::array<double, 3>& values, double integer_range)
+  /// The colour of point `point`; the points before it without one (some writers leave
+  /// it out) are black.
+  void add(std::size_t point, const std::array<double, 3>& values, Color_range range)
   {
+    values_.resize(point, {{0, 0, 0}});
+    ranges_.resize(point, Color_range::BYTE);
     values_.push_back(values);
-    integer_range_.push_back(integer_range == 0 ? 0 : integer_range == 255 ? 1 : 2);
-    if(integer_range == 0)
+    ranges_.push_back(range);
+    if(range == Color_range::UNIT_OR_BYTE)
       for(double x : values)
         floats_above_one_ = floats_above_one_ || x > 1;
-    any_ = true;
   }
-  /// The next point has no colour (some writers leave one out): black.
-  void add_none()
-  {
-    values_.push_back({{0, 0, 0}});
-    integer_range_.push_back(1);
-  }
-  bool any() const { return any_; }
+  bool any() const { return !values_.empty(); }
 
-  /// The colours in 0..255, and the notes on how they were taken.
-  std::vector<std::array<unsigned char, 3>> take(std::vector<std::string>& notes) const
+  /// The colours of the file's `points` points in 0..255, and the notes on how they
+  /// were taken.
+  std::vector<std::array<unsigned char, 3>> take(std::size_t points, std::vector<std::string>& notes) const
   {
-    std::vector<std::array<unsigned char, 3>> colors(values_.size());
+    std::vector<std::array<unsigned char, 3>> colors(points, {{0, 0, 0}});
     std::size_t clamped = 0;
-    for(std::size_t i = 0; i < values_.size(); ++i)
+    for(std::size_t i = 0; i < values_.size(); ++i) {
+      const double scale = ranges_[i] == Color_range::BYTE           ? 1
+                           : ranges_[i] == Color_range::SIXTEEN_BITS ? 255. / 65535
+                           : floats_above_one_                       ? 1
+                                                                     : 255;
       for(int c = 0; c < 3; ++c) {
-        const double scale = integer_range_[i] == 1 ? 1 : integer_range_[i] == 2 ? 255. / 65535 : floats_above_one_ ? 1 : 255;
         const double x = values_[i][std::size_t(c)] * scale;
         clamped += !(x >= 0 && x <= 255);
         colors[i][std::size_t(c)] = x > 0 ? static_cast<unsigned char>(std::lround((std::min)(x, 255.))) : 0;
       }
+    }
     if(floats_above_one_)
       notes.push_back("its colours are numbers with a decimal point, some above 1: taken in 0..255, not in [0, 1]");
     if(clamped > 0)
@@ -285,9 +295,9 @@ public:
   }
 
 private:
-  std::vector<std::array<double, 3>> values_;
-  std::vector<std::uint8_t> integer_range_; // 0: a float, 1: 0..255, 2: 0..65535
-  bool floats_above_one_ = false, any_ = false;
+  std::vector<std::array<double, 3>> values_; // up to the last point with a colour
+  std::vector<Color_range> ranges_;
+  bool floats_above_one_ = false;
 };
 
 /// Reserves room for `count` items, but never more than the bytes left could hold
@@ -388,15 +398,13 @@ inline Polygon_soup read_off(std::string_view text, const std::string& name)
       for(int c = 0; c < 3; ++c)
         if(!std::isfinite(values[std::size_t(c)]))
           fail("vertex " + std::to_string(v) + " has a colour that is not a finite number");
-      colors.add(values, is_float ? 0 : 255);
-    } else {
-      colors.add_none();
+      colors.add(soup.points.size() - 1, values, is_float ? Color_range::UNIT_OR_BYTE : Color_range::BYTE);
     }
     (void)has_texture; // texture coordinates, if any, are the rest of the line
     in.next_line();
   }
   if(colors.any())
-    soup.colors = colors.take(soup.notes);
+    soup.colors = colors.take(soup.points.size(), soup.notes);
   reserve_at_most(soup.polygons, std::uint64_t(face_count), in.bytes_left(), 8);
   for(long long f = 0; f < face_count; ++f) {
     next_content_line();
@@ -453,11 +461,12 @@ inline std::size_t ply_size(Ply_type type)
 
 inline bool is_float(Ply_type type) { return type == Ply_type::FLOAT32 || type == Ply_type::FLOAT64; }
 
-/// The range of a colour channel of this type (see Color_channels): 0 for floats,
-/// 0..65535 for 16-bit integers, 0..255 for the others.
-inline double color_range_of(Ply_type type)
+/// The range of a colour channel of this type (see Color_channels).
+inline Color_range color_range_of(Ply_type type)
 {
-  return is_float(type) ? 0 : type == Ply_type::UINT16 || type == Ply_type::INT16 ? 65535 : 255;
+  return is_float(type)                                          ? Color_range::UNIT_OR_BYTE
+         : type == Ply_type::UINT16 || type == Ply_type::INT16 ? Color_range::SIXTEEN_BITS
+                                                                 : Color_range::BYTE;
 }
 
 struct Ply_property
@@ -692,7 +701,7 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
     for(std::uint64_t e = 0; e < element.count; ++e) {
       std::array<double, 3> point{};
       std::array<double, 3> color{};
-      double color_range = 255; // 0 for floats, see Color_channels
+      Color_range color_range = Color_range::BYTE;
       std::array<double, 2> uv{};
       for(std::size_t p = 0; p < element.properties.size(); ++p) {
         const Ply_property& property = element.properties[p];
@@ -741,7 +750,7 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
       if(is_vertex) {
         soup.points.push_back(point);
         if(colored)
-          colors.add(color, color_range);
+          colors.add(soup.points.size() - 1, color, color_range);
         if(textured)
           soup.uvs.push_back(uv);
       }
@@ -750,7 +759,7 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
   if(!has_vertices)
     fail("it has no PLY vertex element");
   if(colors.any())
-    soup.colors = colors.take(soup.notes);
+    soup.colors = colors.take(soup.points.size(), soup.notes);
   return soup;
 }
 
@@ -882,13 +891,33 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_
   std::vector<std::array<double, 2>> texture_coordinates;
   std::vector<std::vector<std::size_t>> corner_uvs; // per polygon, per corner: a `vt`, or 0 for none
   std::size_t normals = 0;                          // `vn` lines: only their number is checked
-  for(std::size_t line = 1; !in.at_end(); ++line, in.next_line()) {
-    const std::string_view keyword = in.word_in_line('#');
+  std::size_t line = 1;
+  // The next word of the statement: a line that ends in '\\' goes on on the next one
+  // (the OBJ specification's continuation; some exporters break long faces so).
+  auto word = [&]() -> std::string_view {
+    for(;;) {
+      std::string_view w = in.word_in_line('#');
+      if(w.empty() || w.back() != '\\' || !in.at_line_end('#'))
+        return w;
+      in.next_line();
+      ++line;
+      w.remove_suffix(1);
+      if(!w.empty())
+        return w;
+    }
+  };
+  auto end_statement = [&] { // past its last line, continuations included
+    while(!word().empty()) {
+    }
+    in.next_line();
+  };
+  for(; !in.at_end(); ++line, end_statement()) {
+    const std::string_view keyword = word();
     if(keyword == "vt") { // "vt u [v [w]]", v is 0 if absent
       std::array<double, 2> uv{};
-      if(!to_double(in.word_in_line('#'), uv[0]))
+      if(!to_double(word(), uv[0]))
         fail(line, "a texture coordinate has no number");
-      const std::string_view v = in.word_in_line('#'), w = in.word_in_line('#');
+      const std::string_view v = word(), w = word();
       double depth = 0; // w, unused
       if((!v.empty() && !to_double(v, uv[1])) || (!w.empty() && !to_double(w, depth)))
         fail(line, "a texture coordinate is not a number");
@@ -904,7 +933,7 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_
     if(keyword == "v") {
       double x[7];
       int n = 0;
-      for(std::string_view w; n < 7 && !(w = in.word_in_line('#')).empty(); ++n)
+      for(std::string_view w; n < 7 && !(w = word()).empty(); ++n)
         if(!to_double(w, x[n]))
           fail(line, "a vertex has a coordinate that is not a number");
       if(n < 3)
@@ -914,13 +943,11 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_
         for(int c = 0; c < 3; ++c)
           if(!std::isfinite(x[3 + c]))
             fail(line, "a vertex colour is not a finite number");
-        colors.add({{x[3], x[4], x[5]}}, 0);
-      } else {
-        colors.add_none();
+        colors.add(soup.points.size() - 1, {{x[3], x[4], x[5]}}, Color_range::UNIT_OR_BYTE);
       }
     } else if(keyword == "f") {
       std::vector<std::size_t> polygon, uvs;
-      for(std::string_view w; !(w = in.word_in_line('#')).empty();) {
+      for(std::string_view w; !(w = word()).empty();) {
         Obj_corner corner;
         if(!parse_obj_corner(w, corner))
           fail(line, "a face corner '" + std::string(w.substr(0, 40)) +
@@ -941,7 +968,7 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_
     }
   }
   if(colors.any())
-    soup.colors = colors.take(soup.notes);
+    soup.colors = colors.take(soup.points.size(), soup.notes);
   if(!texture_coordinates.empty())
     uvs_of_corners(texture_coordinates, corner_uvs, seams, soup);
   return soup;
@@ -949,24 +976,24 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_
 
 // ------------------------------------------------------------------------ STL
 
-/// Whether `word` is `keyword` (lower case) in any case: STL's keywords are lower case,
-/// some exporters write them in capitals.
-inline bool is_keyword(std::string_view word, std::string_view keyword)
-{
-  return word.size() == keyword.size() &&
-         std::equal(word.begin(), word.end(), keyword.begin(), [](char a, char b) {
-           return (a >= 'A' && a <= 'Z' ? char(a - 'A' + 'a') : a) == b;
-         });
-}
+/// `c` in lower case (ASCII letters only: not the locale's).
+inline char lower_case(char c) { return c >= 'A' && c <= 'Z' ? char(c - 'A' + 'a') : c; }
 
 /// `text` in lower case (ASCII letters only).
 inline std::string lower_case(std::string_view text)
 {
   std::string lower(text);
   for(char& c : lower)
-    if(c >= 'A' && c <= 'Z')
-      c = char(c - 'A' + 'a');
+    c = lower_case(c);
   return lower;
+}
+
+/// Whether `word` is `keyword` (lower case) in any case: STL's keywords are lower case,
+/// some exporters write them in capitals.
+inline bool is_keyword(std::string_view word, std::string_view keyword)
+{
+  return word.size() == keyword.size() &&
+         std::equal(word.begin(), word.end(), keyword.begin(), [](char a, char b) { return lower_case(a) == b; });
 }
 
 /// Whether an STL file is binary: its size is that of its triangle count (some binary
@@ -1088,9 +1115,10 @@ inline Polygon_soup parse_mesh(std::string_view text, const std::string& extensi
   const auto format = format_with_extension(extension);
   if(!format)
     throw Read_error(name + ": unsupported format (use " + supported_extensions() + ")");
-  // a UTF-8 byte-order mark, which some Windows editors write before a text file
+  // a UTF-8 byte-order mark, which some Windows editors write before a text
+  // file or a PLY header; not for STL, whose binary header may start with any bytes
   constexpr std::string_view byte_order_mark = "\xEF\xBB\xBF";
-  if((format->format == Mesh_format::OFF || format->format == Mesh_format::OBJ) &&
+  if(format->format != Mesh_format::STL &&
      text.substr(0, byte_order_mark.size()) == byte_order_mark)
     text.remove_prefix(byte_order_mark.size());
   switch(format->format) {

@@ -221,10 +221,13 @@ namespace internal {
 struct No_uvs
 {};
 
-/// OBJ with texture coordinates, which CGAL's writer leaves out: "v", "vt" and
-/// "f a/a b/b ..." lines, one UV per vertex.
-template <class Mesh, class UVMap>
-bool write_obj_with_uvs(std::ostream& out, const Mesh& mesh, const UVMap& uvs, int precision)
+/// OBJ with vertex colours or texture coordinates, which CGAL's writer leaves out:
+/// colours as "v x y z r g b", r g b in [0, 1] (the extension MeshLab and Blender
+/// read, and the program's reader), texture coordinates as "vt" lines and faces
+/// "f a/a b/b ...", one UV per vertex.
+template <class Mesh, class ColorMap, class UVMap>
+bool write_obj_with_values(std::ostream& out, const Mesh& mesh, const ColorMap* colors, const UVMap* uvs,
+                           int precision)
 {
   using vertex_descriptor = typename boost::graph_traits<Mesh>::vertex_descriptor;
   std::map<vertex_descriptor, std::size_t> index;
@@ -232,14 +235,28 @@ bool write_obj_with_uvs(std::ostream& out, const Mesh& mesh, const UVMap& uvs, i
   for(vertex_descriptor v : vertices(mesh)) {
     index.emplace(v, index.size() + 1);
     const auto& p = get(CGAL::vertex_point, mesh, v);
-    out << "v " << p.x() << ' ' << p.y() << ' ' << p.z() << '\n';
+    out << "v " << p.x() << ' ' << p.y() << ' ' << p.z();
+    if(colors) {
+      const auto& c = get(*colors, v);
+      out << std::setprecision(6) << ' ' << c.red() / 255. << ' ' << c.green() / 255. << ' ' << c.blue() / 255.
+          << std::setprecision(precision); // six digits give each of the 256 levels back
+    }
+    out << '\n';
   }
-  for(vertex_descriptor v : vertices(mesh))
-    out << "vt " << get(uvs, v).x() << ' ' << get(uvs, v).y() << '\n';
+  bool with_uvs = false;
+  if constexpr(!std::is_same<UVMap, No_uvs>::value)
+    if(uvs) {
+      with_uvs = true;
+      for(vertex_descriptor v : vertices(mesh))
+        out << "vt " << get(*uvs, v).x() << ' ' << get(*uvs, v).y() << '\n';
+    }
   for(auto f : faces(mesh)) {
     out << 'f';
-    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-      out << ' ' << index[v] << '/' << index[v];
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh), mesh)) {
+      out << ' ' << index[v];
+      if(with_uvs)
+        out << '/' << index[v];
+    }
     out << '\n';
   }
   return out.good();
@@ -281,12 +298,15 @@ bool write_mesh(std::ostream& out, const Mesh& mesh, const std::string& ext, con
   if constexpr(!std::is_same<UVMap, internal::No_uvs>::value) {
     if(uvs && format->stores_uvs)
       return format->format == Mesh_format::OBJ
-                 ? internal::write_obj_with_uvs(out, mesh, *uvs, options.precision)
+                 ? internal::write_obj_with_values(out, mesh, colors, uvs, options.precision)
                  : write_mesh(out, internal::with_st_properties(mesh, *uvs), ext, colors, options); // PLY: s t
   }
   switch(format->format) {
   case Mesh_format::STL: return internal::write_triangles_STL(out, mesh, precision);
-  case Mesh_format::OBJ: return CGAL::IO::write_OBJ(out, mesh, precision);
+  case Mesh_format::OBJ:
+    return colors ? internal::write_obj_with_values(out, mesh, colors, static_cast<const internal::No_uvs*>(nullptr),
+                                                    options.precision)
+                  : CGAL::IO::write_OBJ(out, mesh, precision);
   case Mesh_format::OFF:
     return colors ? CGAL::IO::write_OFF(out, mesh, precision.vertex_color_map(*colors))
                   : CGAL::IO::write_OFF(out, mesh, precision);

@@ -29,7 +29,7 @@ struct Mesh_format_entry
 
 inline constexpr std::array<Mesh_format_entry, 4> mesh_formats = {{
     {Mesh_format::OFF, "off", false, true, false, true},
-    {Mesh_format::OBJ, "obj", false, false, true, true},
+    {Mesh_format::OBJ, "obj", false, true, true, true},
     {Mesh_format::PLY, "ply", true, true, true, true},
     {Mesh_format::STL, "stl", true, false, false, false},
 }};

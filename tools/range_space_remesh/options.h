@@ -85,7 +85,7 @@ inline const char* const usage =
     "  --max-vertices N      refuse a cell size whose primal remesh would have more\n"
     "                          than N vertices (default: the library's 10 million, or\n"
     "                          fewer if the available memory (or a container's\n"
-    "                          limit) would not hold the run:\n"
+    "                          or ulimit's limit) would not hold the run:\n"
     "                          about 1.3 KB per vertex, 0.4 KB with --output primal)\n"
     "  --output KIND         dual (the default): all quads, one vertex per grid-cell\n"
     "                        piece of the surface; primal: the pieces themselves as\n"

@@ -106,6 +106,22 @@ inline void write_outputs(const Options& options, const Mesh& input, const Mesh&
   }
 }
 
+/// One line on stderr when OUTPUT's format cannot hold the input's vertex values (STL
+/// holds neither colours nor texture coordinates, OFF no texture coordinates): they
+/// are not written, and nothing is lost without a word.
+inline void report_unwritten_values(const Options& options, const Mesh& input)
+{
+  const auto format = rsr_io::format_of(options.output); // checked before any work
+  std::string unwritten;
+  if(find_vertex_colors(input) && !format->stores_colors)
+    unwritten = "vertex colours";
+  if(find_vertex_uvs(input) && !format->stores_uvs)
+    unwritten += std::string(unwritten.empty() ? "" : " and ") + "texture coordinates";
+  if(!unwritten.empty())
+    std::cerr << "range_space_remesh: " << quote(options.output) << ": the input's " << unwritten
+              << " are not written: ." << format->extension << " files do not hold them" << std::endl;
+}
+
 } // namespace rsr_program
 
 #endif // RANGE_SPACE_REMESHING_TOOLS_OUTPUT_H

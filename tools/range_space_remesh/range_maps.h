@@ -235,7 +235,7 @@ inline RSR::Remesh_statistics remesh(const Mesh& input, const Input_normals& nor
     fail("--preserve-topology needs the complete scan: drop --seeded");
   options.defects->clear();
   if(options.map->uses_colors && !find_vertex_colors(input))
-    fail("--map " + std::string(options.map->name) + " needs vertex colours: give a PLY or COFF input with colours");
+    fail("--map " + std::string(options.map->name) + " needs vertex colours: give a PLY, COFF or OBJ input with colours");
   const Shared_parameters np = shared_parameters(h, options);
   return options.map->remesh(Map_run{input, normals, np, options, output});
 }

@@ -131,6 +131,9 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                               {"written", carried && rsr_io::format_of(options.output)->stores_uvs},
                               {"seam_vertices", io.uv_seam_vertices},
                               {"corners_without", io.uv_missing_corners}};
+  j["vertex_colors"] = {{"read", find_vertex_colors(input).has_value()},
+                        {"written", find_vertex_colors(output).has_value() &&
+                                        rsr_io::format_of(options.output)->stores_colors}};
   j["input_notes"] = io.reader_notes;
   j["attribute_seams"] = {{"opened_edges", io.opened_seam_edges}, {"blended_edges", io.blended_seam_edges}};
   j["input_repairs"] = {{"repaired", repairs.repaired()},

@@ -12,8 +12,11 @@
 
 #include <CGAL/Range_space_remeshing/remesh.h>
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <cstddef>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <utility>
@@ -28,8 +31,38 @@ inline double number_in_file(const char* path)
   return in >> x ? x : 0;
 }
 
+/// The kilobytes of the line `key` ("VmSize:") of /proc/self/status, 0 if none.
+inline double own_status_kilobytes(const std::string& key)
+{
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while(std::getline(status, line))
+    if(line.compare(0, key.size(), key) == 0)
+      return std::atof(line.c_str() + key.size());
+  return 0;
+}
+
+/// The bytes this process may still map under its limits on address space (`ulimit -v`)
+/// and data (`ulimit -d`), 0 if it has none: past them an allocation fails however much
+/// memory the machine has.
+inline double address_space_left()
+{
+  double left = 0;
+  const std::pair<int, const char*> limits[] = {{RLIMIT_AS, "VmSize:"}, {RLIMIT_DATA, "VmData:"}};
+  for(const auto& [resource, key] : limits) {
+    rlimit limit{};
+    if(::getrlimit(resource, &limit) != 0 || limit.rlim_cur == RLIM_INFINITY)
+      continue;
+    const double room = (std::max)(double(limit.rlim_cur) - 1024 * own_status_kilobytes(key), 1.0);
+    if(left == 0 || room < left)
+      left = room;
+  }
+  return left;
+}
+
 /// The memory this process can still take, in bytes: Linux' MemAvailable, or less
-/// inside a container whose memory limit (cgroup v2, else v1) is lower; 0 if unknown.
+/// inside a container whose memory limit (cgroup v2, else v1) is lower or under a
+/// process limit (`ulimit -v`, `-d`); 0 if unknown.
 inline double available_memory()
 {
   std::ifstream meminfo("/proc/meminfo");
@@ -51,6 +84,9 @@ inline double available_memory()
         available = left;
     }
   }
+  const double process_left = address_space_left();
+  if(process_left > 0 && (available == 0 || process_left < available))
+    available = process_left;
   return available;
 }
 
