@@ -622,8 +622,37 @@ void test_ply_byte_order_mark()
   CHECK_EQ(parse("\xEF\xBB\xBF" + ply, "ply").polygons.size(), std::size_t(1));
 }
 
+/// PLY triangle strips (`tristrips`): every second triangle turned, -1 starts a
+/// new strip, the degenerate triangles that join strips are not faces.
+void test_ply_triangle_strips()
+{
+  const std::string header = "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
+                             "property float z\nelement tristrips 1\nproperty list int int vertex_indices\nend_header\n"
+                             "0 0 0\n0 1 0\n1 0 0\n1 1 0\n2 0 0\n2 1 0\n3 0 0\n3 1 0\n";
+  const auto soup = parse(header + "12 0 2 1 3 3 4 4 5 6 -1 6 7\n", "ply");
+  // 0 2 1 3 gives 0 2 1 and 1 2 3; "3 3 4 4" only joins; 4 5 6 is the ninth corner's
+  // triangle (not turned); after -1, "6 7" is too short for a triangle
+  using Polygon = std::vector<std::size_t>;
+  const std::vector<Polygon> expected = {{0, 2, 1}, {1, 2, 3}, {4, 5, 6}};
+  CHECK_EQ(soup.polygons.size(), expected.size());
+  for(std::size_t f = 0; f < std::min(expected.size(), soup.polygons.size()); ++f)
+    CHECK(soup.polygons[f] == expected[f]);
+  CHECK(refuses(header + "3 0 -2 1\n", "ply"));
+  // one-byte indices, a triangle each: more than kMaximum_bytes_per_file_byte allows
+  std::string bomb = "ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty uchar x\n"
+                     "property uchar y\nproperty uchar z\nelement tristrips 1\n"
+                     "property list int uchar vertex_indices\nend_header\n";
+  bomb.append("\0\0\0\1\0\0\0\1\0", 9);
+  const std::int32_t length = 300000;
+  bomb.append(reinterpret_cast<const char*>(&length), 4);
+  for(std::int32_t i = 0; i < length; ++i)
+    bomb.push_back(char("\0\1\2"[i % 3]));
+  CHECK(refuses(bomb, "ply"));
+}
+
 int main()
 {
+  test_ply_triangle_strips();
   test_obj_line_continuations();
   test_ply_byte_order_mark();
   test_formats_agree();

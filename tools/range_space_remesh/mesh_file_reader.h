@@ -606,6 +606,38 @@ private:
   int format_; // 0 ascii, 1 binary little endian, 2 binary big endian
 };
 
+/// In a PLY triangle strip, what the file's -1 between two strips becomes.
+constexpr std::size_t kStrip_end = std::size_t(-1);
+
+/// The triangles of a PLY triangle strip (`tristrips`, as scanners and VCG write
+/// it): kStrip_end ends a strip; every second triangle is turned so that all keep the
+/// strip's orientation; a triangle with a repeated corner is how a strip turns or
+/// joins the next, not a face, and is skipped. False, and some triangles appended,
+/// if there would be more than `most` polygons.
+inline bool append_strip_triangles(const std::vector<std::size_t>& strip, std::vector<std::vector<std::size_t>>& polygons,
+                                   std::size_t most)
+{
+  std::size_t begin = 0; // of the current strip
+  for(std::size_t i = 0; i < strip.size(); ++i) {
+    if(strip[i] == kStrip_end) {
+      begin = i + 1;
+      continue;
+    }
+    if(i < begin + 2)
+      continue;
+    std::size_t a = strip[i - 2], b = strip[i - 1];
+    const std::size_t c = strip[i];
+    if(a == b || b == c || a == c)
+      continue;
+    if((i - begin) % 2 == 1)
+      std::swap(a, b);
+    if(polygons.size() >= most)
+      return false;
+    polygons.push_back({a, b, c});
+  }
+  return true;
+}
+
 inline Polygon_soup read_ply(std::string_view text, const std::string& name)
 {
   auto fail = [&](const std::string& what) -> void { throw Read_error(name + ": " + what); };
@@ -667,14 +699,19 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
     fail("its PLY header has no format line");
 
   Polygon_soup soup;
-  bool has_vertices = false, has_faces = false;
+  bool has_vertices = false, has_faces = false, has_strips = false;
   Color_channels colors;
   Ply_values values(text.substr(std::size_t(header.position() - text.data())), format);
+  // a triangle takes about 64 bytes, and a strip of one-byte indices makes one per
+  // byte: strips could pass the bound of kMaximum_bytes_per_file_byte, faces cannot
+  const auto most_strip_triangles = std::size_t(kMaximum_bytes_per_file_byte / 64 * double(text.size()));
   for(const Ply_element& element : elements) {
     const bool is_vertex = element.name == "vertex" && !has_vertices;
     const bool is_face = element.name == "face" && !has_faces;
+    const bool is_strips = element.name == "tristrips" && !has_strips;
     has_vertices = has_vertices || is_vertex;
     has_faces = has_faces || is_face;
+    has_strips = has_strips || is_strips;
     std::size_t minimum = 0; // the fewest bytes an element of this kind takes
     for(const Ply_property& property : element.properties)
       minimum += values.minimum_size(property.is_list ? property.count_type : property.type);
@@ -687,8 +724,8 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
     const int indices = roles.indices;
     if(is_vertex && (coordinate[0] < 0 || coordinate[1] < 0 || coordinate[2] < 0))
       fail("its PLY vertices have no x, y and z");
-    if(is_face && indices < 0)
-      fail("its PLY faces have no vertex_indices list");
+    if((is_face || is_strips) && indices < 0)
+      fail("its PLY '" + element.name + "' elements have no vertex_indices list");
     const bool colored = is_vertex && channel[0] >= 0 && channel[1] >= 0 && channel[2] >= 0;
     const bool textured = is_vertex && texture[0] >= 0 && texture[1] >= 0;
     if(is_vertex) {
@@ -732,20 +769,25 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
           fail("its '" + element.name + "' element " + std::to_string(e) + " has no valid list length");
         if(length > double(values.bytes_left() / values.minimum_size(property.type)))
           fail("its '" + element.name + "' element " + std::to_string(e) + " has a list longer than the file");
-        std::vector<std::size_t> polygon;
-        if(int(p) == indices && is_face)
-          polygon.reserve(std::size_t(length));
+        const bool is_corner_list = int(p) == indices && (is_face || is_strips);
+        std::vector<std::size_t> corners;
+        if(is_corner_list)
+          corners.reserve(std::size_t(length));
         for(std::size_t i = 0; i < std::size_t(length); ++i) {
           if(!values.read(property.type, value))
             fail("its '" + element.name + "' element " + std::to_string(e) + " is truncated or not a number");
-          if(int(p) == indices && is_face) {
-            if(!(value >= 0 && value < 1e15) || value != std::floor(value))
-              fail("face " + std::to_string(e) + " has an index that is not a non-negative integer");
-            polygon.push_back(std::size_t(value));
+          if(is_corner_list) {
+            if(!(value >= (is_strips ? -1 : 0) && value < 1e15) || value != std::floor(value))
+              fail(std::string(is_strips ? "triangle strip " : "face ") + std::to_string(e) +
+                   " has an index that is not a non-negative integer" + (is_strips ? " or -1" : ""));
+            corners.push_back(value < 0 ? kStrip_end : std::size_t(value));
           }
         }
-        if(int(p) == indices && is_face)
-          soup.polygons.push_back(std::move(polygon));
+        if(is_corner_list && is_face)
+          soup.polygons.push_back(std::move(corners));
+        if(is_corner_list && is_strips && !append_strip_triangles(corners, soup.polygons, most_strip_triangles))
+          fail("its triangle strips make more triangles than the reader holds for a file of " +
+               std::to_string(text.size()) + " bytes");
       }
       if(is_vertex) {
         soup.points.push_back(point);
