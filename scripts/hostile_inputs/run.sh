@@ -28,12 +28,12 @@ RESULTS=${RESULTS:-$CORPUS/RESULTS.md}
 if [ ! -x /usr/bin/time ]; then
   apt-get install -y -q time >/dev/null 2>&1 || { echo "needs /usr/bin/time (apt-get install time)" >&2; exit 64; }
 fi
-# the corpus files are generated: make them if missing
-[ -f "$CORPUS/hostile/EXPECT.tsv" ] || python3 "$CORPUS/make_hostile.py" >/dev/null
-[ -d "$CORPUS/converted" ] || python3 "$CORPUS/make_converted.py"
+# the corpus files are generated: make them if missing (the conversions read CGAL's meshes)
 if [ ! -d "$CORPUS/cgal/data/meshes" ] && [ -f /usr/share/doc/libcgal-dev/data.tar.gz ]; then
   mkdir -p "$CORPUS/cgal" && tar xzf /usr/share/doc/libcgal-dev/data.tar.gz -C "$CORPUS/cgal" data/meshes
 fi
+[ -f "$CORPUS/hostile/EXPECT.tsv" ] || python3 "$CORPUS/make_hostile.py" >/dev/null || exit 64
+[ -f "$CORPUS/converted/sphere_colorfn.off" ] || python3 "$CORPUS/make_converted.py" || exit 64
 
 rm -rf "$OUTDIR/out" "$OUTDIR/log" "$OUTDIR/work"
 mkdir -p "$OUTDIR/out" "$OUTDIR/log" "$OUTDIR/work"

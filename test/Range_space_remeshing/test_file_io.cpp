@@ -495,18 +495,33 @@ void test_texture_coordinates()
   CHECK(one_number.uvs.size() == 3 && one_number.uvs[0][0] == 0.5 && one_number.uvs[0][1] == 0);
 }
 
-/// Corners whose texture coordinate or normal is not one the file defines are refused,
-/// like vertex indices: the UVs are never dropped without a word.
-void test_bad_obj_corners_are_refused()
+/// OBJ face corners: malformed ones refused; empty fields absent; a texture coordinate
+/// the file does not define drops the UVs with a note, never without a word.
+void test_obj_corners()
 {
   const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nvt 1 0\nvt 0 1\nvn 0 0 1\n";
   CHECK(!refuses(obj + "f 1/1 2/2 3/3\nf 1/-3/1 2//-1 3/3/1\nf 1 2 3\n", "obj"));
-  for(const char* corner : {"3/0", "3/4", "3/-4", "3/-7", "3/99999999999999999999", "3/x", "3/1.5", "3/1x",
-                            "3/1/1/1", "3/1/2", "3//9", "3/1/q", "3/1/0", "3/+", "/1", "3/", "3//", "3/1/"})
+  for(const char* corner : {"3/0", "3/99999999999999999999", "3/x", "3/1.5", "3/1x", "3/1/1/1", "3/1/q", "3/1/0",
+                            "3/+", "/1", "//1", "0/1"})
     if(!refuses(obj + "f 1/1 2/2 " + corner + "\n", "obj")) {
       std::cerr << "corner '" << corner << "' accepted" << std::endl;
       CHECK(false);
     }
+  // empty fields are absent (exporters write "1//"); normals are not read, so a
+  // normal the file lacks does not matter
+  for(const char* corner : {"3/", "3//", "3/3/", "3//9", "3/3/9"}) {
+    const auto soup = parse(obj + "f 1/1 2/2 " + corner + "\n", "obj");
+    CHECK_EQ(soup.polygons.size(), std::size_t(1));
+    CHECK(soup.notes.empty());
+  }
+  // a texture coordinate the file lacks: the faces are read, the texture coordinates
+  // not (which were meant is unknown), and a note says so
+  for(const char* corner : {"3/4", "3/-4", "3/-7"}) {
+    const auto soup = parse(obj + "f 1/1 2/2 " + corner + "\nf 1/1 2/2 3/3\n", "obj");
+    CHECK_EQ(soup.polygons.size(), std::size_t(2));
+    CHECK(soup.uvs.empty());
+    CHECK(soup.notes.size() == 1 && soup.notes[0].find("texture coordinates not read") != std::string::npos);
+  }
   CHECK(refuses("v 0 0 0\nvt 0 0 x\n", "obj")); // w, unused, must still be a number
   CHECK(refuses("v 0 0 0\nvt nan 0\n", "obj"));
   CHECK(refuses("v 0 0 0\nvt 0 inf\n", "obj"));
@@ -660,7 +675,7 @@ int main()
   test_repairs_are_counted();
   test_written_files_read_back();
   test_texture_coordinates();
-  test_bad_obj_corners_are_refused();
+  test_obj_corners();
   test_ply_texture_names();
   test_files_read_as_they_mean();
   return report("test_file_io");

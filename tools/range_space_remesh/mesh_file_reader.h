@@ -815,15 +815,15 @@ struct Obj_corner
 };
 
 /// `word` as a corner; false unless it has one of the four forms with non-zero
-/// integers ("1/1/1/1", "1/x", "1/1.5", "0", "1/", "1//" and "1/1/" are not corners).
+/// integers ("1/1/1/1", "1/x", "1/1.5", "0" and "/1" are not corners). An empty field
+/// after a slash is absent ("1/", "1//" and "1/1/", as some exporters write them).
 inline bool parse_obj_corner(std::string_view word, Obj_corner& corner)
 {
   long long* fields[3] = {&corner.v, &corner.t, &corner.n};
   for(std::size_t k = 0; k < 3; ++k) {
     const auto slash = word.find('/');
     const std::string_view field = word.substr(0, slash);
-    const bool absent_t = k == 1 && field.empty() && slash != std::string_view::npos; // "v//n"
-    if(!absent_t && (!to_integer(field, *fields[k]) || *fields[k] == 0))
+    if(!(k > 0 && field.empty()) && (!to_integer(field, *fields[k]) || *fields[k] == 0))
       return false;
     if(slash == std::string_view::npos)
       return true;
@@ -932,7 +932,7 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_
   Color_channels colors;
   std::vector<std::array<double, 2>> texture_coordinates;
   std::vector<std::vector<std::size_t>> corner_uvs; // per polygon, per corner: a `vt`, or 0 for none
-  std::size_t normals = 0;                          // `vn` lines: only their number is checked
+  std::size_t dangling_uvs = 0; // corners whose `vt` the file does not define
   std::size_t line = 1;
   // The next word of the statement: a line that ends in '\\' goes on on the next one
   // (the OBJ specification's continuation; some exporters break long faces so).
@@ -968,10 +968,6 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_
       texture_coordinates.push_back(uv);
       continue;
     }
-    if(keyword == "vn") {
-      ++normals;
-      continue;
-    }
     if(keyword == "v") {
       double x[7];
       int n = 0;
@@ -999,9 +995,7 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_
         if(v == 0)
           fail(line, "a face refers to a vertex not defined before it");
         if(corner.t != 0 && t == 0)
-          fail(line, "a face refers to a texture coordinate not defined before it");
-        if(corner.n != 0 && resolved_obj_index(corner.n, normals) == 0)
-          fail(line, "a face refers to a normal not defined before it");
+          ++dangling_uvs;
         polygon.push_back(v - 1);
         uvs.push_back(t);
       }
@@ -1011,7 +1005,10 @@ inline Polygon_soup read_obj(std::string_view text, const std::string& name, Uv_
   }
   if(colors.any())
     soup.colors = colors.take(soup.points.size(), soup.notes);
-  if(!texture_coordinates.empty())
+  if(dangling_uvs > 0) // the faces are whole; which texture coordinates were meant is not known
+    soup.notes.push_back(std::to_string(dangling_uvs) + " face corner" + (dangling_uvs == 1 ? " refers" : "s refer") +
+                         " to a texture coordinate not defined before it: texture coordinates not read");
+  else if(!texture_coordinates.empty())
     uvs_of_corners(texture_coordinates, corner_uvs, seams, soup);
   return soup;
 }
