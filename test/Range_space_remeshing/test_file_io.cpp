@@ -580,6 +580,11 @@ void test_files_read_as_they_mean()
   const auto out_of_range = parse("COFF\n3 1 0\n0 0 0 300 -5 10\n1 0 0 1 2 3\n0 1 0 4 5 6\n3 0 1 2\n", "off");
   CHECK(out_of_range.colors.size() == 3 && out_of_range.colors[0] == (std::array<unsigned char, 3>{{255, 0, 10}}));
   CHECK(out_of_range.notes.size() == 1 && out_of_range.notes[0].find("2 colour values") == 0);
+  // an OBJ file with colours on some `v` lines only: the others black, and said
+  const auto partial = parse("v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0 1\nv 1 1 0\nf 1 2 3\nf 2 4 3\n", "obj");
+  CHECK(partial.colors.size() == 4 && partial.colors[1] == (std::array<unsigned char, 3>{{0, 0, 0}}) &&
+        partial.colors[2] == (std::array<unsigned char, 3>{{0, 0, 255}}));
+  CHECK(partial.notes.size() == 1 && partial.notes[0] == "2 of its 4 vertices have no colour: black");
 
   const auto capitals = parse("SOLID X\nFACET NORMAL 0 0 1\nOUTER LOOP\nVERTEX 0 0 0\nVERTEX 1 0 0\nVERTEX 0 1 0\n"
                               "ENDLOOP\nENDFACET\nENDSOLID X\n",

@@ -158,6 +158,34 @@ void test_quadrilaterals_around_a_vertex_of_valence_2()
   CHECK(borders_of(mesh) == std::vector<std::size_t>{4});
 }
 
+/// The same when one of the two quadrilaterals is non-convex (in the plane where it is
+/// widest), its reflex corner at an end of the diagonal the other one took: split by
+/// its triangulation, it repeated the other's triangle. Two quadrilaterals of a
+/// remesh of CGAL's bones.off (--seeded --cell-size 0.03), each order of the two.
+void test_non_convex_quadrilateral_around_a_vertex_of_valence_2()
+{
+  const std::vector<Point> points{Point(1.1819116998625316, -0.4607286683042916, 0.035583120634886459),
+                                  Point(0.85212141474569092, -0.66526157489075999, 0.26457009472307946),
+                                  Point(0.95028174090178286, -0.48969402056335465, -0.14429892445293538),
+                                  Point(1.1003154933836465, -0.38865172690229388, -0.0075148480529919591),
+                                  Point(0.91732294615073584, -0.21752597962627607, 0.099976839468273626)};
+  for(const Polygons& quadrilaterals : {Polygons{{0, 1, 2, 3}, {0, 3, 4, 1}}, Polygons{{0, 3, 4, 1}, {0, 1, 2, 3}}}) {
+    Polygons polygons = quadrilaterals;
+    RSR::internal::split_polygons(points, polygons);
+    std::set<std::set<std::size_t>> triangles;
+    for(const auto& triangle : polygons)
+      triangles.insert(std::set<std::size_t>(triangle.begin(), triangle.end()));
+    CHECK_EQ(polygons.size(), std::size_t(4));
+    CHECK_EQ(triangles.size(), std::size_t(4)); // none twice
+    std::vector<Point> soup_points = points;
+    polygons = quadrilaterals;
+    Mesh mesh;
+    RSR::prepare_input(soup_points, polygons, mesh, RSR::Input_repair::REFUSE);
+    CHECK(CGAL::is_valid_polygon_mesh(mesh));
+    CHECK_EQ(num_faces(mesh), Mesh::size_type(4));
+  }
+}
+
 /// The linear sort of the soup's edges gives the order of a comparison sort by (key,
 /// corner): random soups of triangles to hexagons over few points (repeated keys, some
 /// runs of more than two) with a hub named by many polygons (a run longer than the
@@ -285,6 +313,7 @@ int main(int argc, char** argv)
   test_same_mesh_as_cgal(argv[1]);
   test_vertex_of_huge_valence();
   test_quadrilaterals_around_a_vertex_of_valence_2();
+  test_non_convex_quadrilateral_around_a_vertex_of_valence_2();
   test_sorted_polygon_edges();
   test_non_convex_polygons_split_inside();
   test_polygons_crossing_themselves();

@@ -34,6 +34,9 @@
 #include <CGAL/assertions_behaviour.h>
 #include <CGAL/version.h>
 
+#include <gmp.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -212,10 +215,42 @@ int run_program(int argc, char** argv)
   return EXIT_SUCCESS;
 }
 
+// GMP cannot report a failed allocation: its manual says the allocation functions
+// must not return on failure, and that an exception thrown through GMP is undefined;
+// its own functions abort with a message. The program's contract is one line and
+// exit 2, with no file left: so does a failed allocation of GMP (and of MPFR, which
+// allocates through GMP's functions).
+[[noreturn]] void exit_out_of_memory()
+{
+  rsr_io::internal::remove_pending_files();
+  constexpr char line[] = "range_space_remesh: out of memory\n";
+  [[maybe_unused]] const auto written = ::write(2, line, sizeof line - 1);
+  ::_exit(2);
+}
+
+void* gmp_allocate(std::size_t size)
+{
+  void* p = std::malloc(size);
+  if(p == nullptr)
+    exit_out_of_memory();
+  return p;
+}
+
+void* gmp_reallocate(void* old, std::size_t, std::size_t size)
+{
+  void* p = std::realloc(old, size);
+  if(p == nullptr && size > 0)
+    exit_out_of_memory();
+  return p;
+}
+
+void gmp_free(void* p, std::size_t) { std::free(p); }
+
 } // namespace
 
 int main(int argc, char** argv)
 {
+  mp_set_memory_functions(gmp_allocate, gmp_reallocate, gmp_free);
   // CGAL warnings (e.g. a polygon the constrained triangulation cannot handle) are
   // dealt with by the program, and CGAL's failed checks throw with no message of
   // their own: CGAL's default error handler prints several lines on stderr before it

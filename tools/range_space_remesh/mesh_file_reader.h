@@ -35,6 +35,7 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include <fcntl.h>
@@ -263,6 +264,7 @@ public:
     ranges_.resize(point, Color_range::BYTE);
     values_.push_back(values);
     ranges_.push_back(range);
+    ++given_;
     if(range == Color_range::UNIT_OR_BYTE)
       for(double x : values)
         floats_above_one_ = floats_above_one_ || x > 1;
@@ -287,7 +289,10 @@ public:
       }
     }
     if(floats_above_one_)
-      notes.push_back("its colours are numbers with a decimal point, some above 1: taken in 0..255, not in [0, 1]");
+      notes.push_back("its colours, which may be in [0, 1], have values above 1: all taken in 0..255");
+    if(given_ < points)
+      notes.push_back(std::to_string(points - given_) + " of its " + std::to_string(points) +
+                      " vertices have no colour: black");
     if(clamped > 0)
       notes.push_back(std::to_string(clamped) + (clamped == 1 ? " colour value is" : " colour values are") +
                       " outside 0..255: clamped");
@@ -297,6 +302,7 @@ public:
 private:
   std::vector<std::array<double, 3>> values_; // up to the last point with a colour
   std::vector<Color_range> ranges_;
+  std::size_t given_ = 0; // points with a colour
   bool floats_above_one_ = false;
 };
 
@@ -647,6 +653,7 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
   header.next_line();
   int format = -1;
   std::vector<Ply_element> elements;
+  std::unordered_set<std::string> property_names; // of the last element: a set, as a header may list many
   for(std::size_t line = 2;; ++line, header.next_line()) {
     if(header.at_end())
       fail("its PLY header has no end_header");
@@ -672,6 +679,7 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
         fail("its PLY element count cannot be right ('" + std::string(word) + "'" + where + ")");
       element.count = std::uint64_t(count);
       elements.push_back(std::move(element));
+      property_names.clear();
     } else if(keyword == "property") {
       if(elements.empty())
         fail("it has a PLY property before any element" + where);
@@ -686,10 +694,9 @@ inline Polygon_soup read_ply(std::string_view text, const std::string& name)
       if(!ply_type_of(type, property.type))
         fail("unknown PLY property type '" + std::string(type) + "'" + where);
       property.name = std::string(header.word_in_line());
-      for(const Ply_property& before : elements.back().properties)
-        if(before.name == property.name) // which one would be meant?
-          fail("its PLY element '" + elements.back().name + "' has two properties named '" + property.name + "'" +
-               where);
+      if(!property_names.insert(property.name).second) // which one would be meant?
+        fail("its PLY element '" + elements.back().name + "' has two properties named '" + property.name + "'" +
+             where);
       elements.back().properties.push_back(std::move(property));
     } else {
       fail("unknown PLY header keyword '" + std::string(keyword) + "'" + where);

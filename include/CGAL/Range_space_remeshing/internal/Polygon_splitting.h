@@ -216,6 +216,24 @@ inline std::pair<std::size_t, std::size_t> shared_edge(const std::array<std::siz
   return std::minmax(common[0], common[1]);
 }
 
+/// Whether the split of a non-convex quadrilateral `p` into `triangles` (along the
+/// diagonal through its reflex corner) can stand, and if so takes that diagonal.
+/// Not if another quadrilateral took the diagonal and the other one is free: two
+/// quadrilaterals around a vertex of valence 2 would give one triangle twice (a
+/// non-manifold edge), where the other diagonal only folds the quadrilateral.
+template <class Polygon>
+bool take_reflex_diagonal(const Polygon& p, const Index_triangles& triangles, Index_pairs& taken)
+{
+  using Pair = std::pair<std::size_t, std::size_t>;
+  const Pair diagonal = shared_edge(triangles[0], triangles[1]);
+  const Pair first = std::minmax(std::size_t(p[0]), std::size_t(p[2]));
+  const Pair other = diagonal == first ? Pair(std::minmax(std::size_t(p[1]), std::size_t(p[3]))) : first;
+  if(taken.count(diagonal) && !taken.count(other))
+    return false;
+  taken.insert(diagonal);
+  return true;
+}
+
 /// Splits every polygon of the soup into triangles, in the soup: a non-convex one by
 /// a constrained triangulation in its plane, a convex one as `split_convex()` does.
 /// Not CGAL's `triangulate_faces()`: on a non-planar polygon whose projection crosses
@@ -240,10 +258,8 @@ std::size_t split_polygons(const PointRange& points, PolygonRange& polygons)
       continue;
     ++split;
     Index_triangles triangles = triangulate_non_convex(points, polygon);
-    if(triangles.empty())
+    if(triangles.empty() || (polygon.size() == 4 && !take_reflex_diagonal(polygon, triangles, taken)))
       triangles = split_convex(points, polygon, taken);
-    else if(polygon.size() == 4)
-      taken.insert(shared_edge(triangles[0], triangles[1])); // the diagonal through the reflex corner
     polygon.assign(triangles[0].begin(), triangles[0].end()); // before emplace_back() may move it
     for(std::size_t t = 1; t < triangles.size(); ++t)
       polygons.emplace_back(triangles[t].begin(), triangles[t].end());
