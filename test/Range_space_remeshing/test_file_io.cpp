@@ -580,6 +580,18 @@ void test_files_read_as_they_mean()
   const auto out_of_range = parse("COFF\n3 1 0\n0 0 0 300 -5 10\n1 0 0 1 2 3\n0 1 0 4 5 6\n3 0 1 2\n", "off");
   CHECK(out_of_range.colors.size() == 3 && out_of_range.colors[0] == (std::array<unsigned char, 3>{{255, 0, 10}}));
   CHECK(out_of_range.notes.size() == 1 && out_of_range.notes[0].find("2 colour values") == 0);
+  // a COFF file whose colour lines mix integers and floats: the file decides, said
+  const auto mixed_unit = parse("COFF\n3 1 0\n0 0 0 1 0 0\n1 0 0 0.5 0.5 0.5\n0 1 0 0 1 0\n3 0 1 2\n", "off");
+  CHECK(mixed_unit.colors.size() == 3 && mixed_unit.colors[0] == (std::array<unsigned char, 3>{{255, 0, 0}}) &&
+        mixed_unit.colors[1] == (std::array<unsigned char, 3>{{128, 128, 128}}));
+  CHECK(mixed_unit.notes.size() == 1 && mixed_unit.notes[0].find("all taken in [0, 1]") != std::string::npos);
+  const auto mixed_bytes = parse("COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0 0.5 0.5 0.5\n0 1 0 0 1 0\n3 0 1 2\n", "off");
+  CHECK(mixed_bytes.colors.size() == 3 && mixed_bytes.colors[0] == (std::array<unsigned char, 3>{{255, 0, 0}}) &&
+        mixed_bytes.colors[1] == (std::array<unsigned char, 3>{{1, 1, 1}}));
+  CHECK(mixed_bytes.notes.size() == 1 && mixed_bytes.notes[0].find("all taken in 0..255") != std::string::npos);
+  const auto integers = parse("COFF\n3 1 0\n0 0 0 1 0 0\n1 0 0 255 0 0\n0 1 0 0 1 0\n3 0 1 2\n", "off");
+  CHECK(integers.colors.size() == 3 && integers.colors[0] == (std::array<unsigned char, 3>{{1, 0, 0}}) &&
+        integers.notes.empty()); // integers only: 0..255, as CGAL's COFF
   // an OBJ file with colours on some `v` lines only: the others black, and said
   const auto partial = parse("v 0 0 0 1 0 0\nv 1 0 0\nv 0 1 0 0 0 1\nv 1 1 0\nf 1 2 3\nf 2 4 3\n", "obj");
   CHECK(partial.colors.size() == 4 && partial.colors[1] == (std::array<unsigned char, 3>{{0, 0, 0}}) &&

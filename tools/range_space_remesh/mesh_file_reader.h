@@ -265,9 +265,14 @@ public:
     values_.push_back(values);
     ranges_.push_back(range);
     ++given_;
-    if(range == Color_range::UNIT_OR_BYTE)
-      for(double x : values)
-        floats_above_one_ = floats_above_one_ || x > 1;
+    const bool above_one = std::any_of(values.begin(), values.end(), [](double x) { return x > 1; });
+    if(range == Color_range::UNIT_OR_BYTE) {
+      ++floats_;
+      floats_above_one_ = floats_above_one_ || above_one;
+    } else if(range == Color_range::BYTE) {
+      ++integers_;
+      integers_above_one_ = integers_above_one_ || above_one;
+    }
   }
   bool any() const { return !values_.empty(); }
 
@@ -276,19 +281,26 @@ public:
   std::vector<std::array<unsigned char, 3>> take(std::size_t points, std::vector<std::string>& notes) const
   {
     std::vector<std::array<unsigned char, 3>> colors(points, {{0, 0, 0}});
+    // an OFF file decides line by line: "1 0 0" among "0.5 0.5 0.5" lines is the file's
+    // [0, 1], not 1/255 (and 255 among floats makes them all 0..255), so the file decides
+    const bool mixed = integers_ > 0 && floats_ > 0;
+    const bool in_bytes = floats_above_one_ || (mixed && integers_above_one_);
     std::size_t clamped = 0;
     for(std::size_t i = 0; i < values_.size(); ++i) {
-      const double scale = ranges_[i] == Color_range::BYTE           ? 1
-                           : ranges_[i] == Color_range::SIXTEEN_BITS ? 255. / 65535
-                           : floats_above_one_                       ? 1
-                                                                     : 255;
+      const bool as_float = ranges_[i] == Color_range::UNIT_OR_BYTE || (mixed && ranges_[i] == Color_range::BYTE);
+      const double scale = ranges_[i] == Color_range::SIXTEEN_BITS ? 255. / 65535
+                           : !as_float || in_bytes               ? 1
+                                                                   : 255;
       for(int c = 0; c < 3; ++c) {
         const double x = values_[i][std::size_t(c)] * scale;
         clamped += !(x >= 0 && x <= 255);
         colors[i][std::size_t(c)] = x > 0 ? static_cast<unsigned char>(std::lround((std::min)(x, 255.))) : 0;
       }
     }
-    if(floats_above_one_)
+    if(mixed)
+      notes.push_back(std::string("its colours mix integers and numbers with a decimal point: all taken in ") +
+                      (in_bytes ? "0..255" : "[0, 1]"));
+    else if(floats_above_one_)
       notes.push_back("its colours, which may be in [0, 1], have values above 1: all taken in 0..255");
     if(given_ < points)
       notes.push_back(std::to_string(points - given_) + " of its " + std::to_string(points) +
@@ -303,6 +315,8 @@ private:
   std::vector<std::array<double, 3>> values_; // up to the last point with a colour
   std::vector<Color_range> ranges_;
   std::size_t given_ = 0; // points with a colour
+  std::size_t floats_ = 0, integers_ = 0; // of them, given as UNIT_OR_BYTE, as BYTE
+  bool integers_above_one_ = false;
   bool floats_above_one_ = false;
 };
 
