@@ -155,8 +155,9 @@ if(NOT plain_collapsed EQUAL 0 OR NOT collapsed GREATER 0 OR NOT collapse_non_qu
 endif()
 
 # topology: a coarse cell size is flagged (a warning on stderr, the faces in the
-# report), --preserve-topology refines the cell size until the check passes
-run(0 t.off --stats --output primal --cell-size 0.1 --topology-report flagged.off ${elephant} t.off)
+# report), --preserve-topology refines the cell size until the check passes (0.08:
+# the primal at 0.1 has parallel edges, refused)
+run(0 t.off --stats --output primal --cell-size 0.08 --topology-report flagged.off ${elephant} t.off)
 string(JSON coarse_preserved GET "${out}" topology preserved)
 string(JSON coarse_non_disk GET "${out}" topology non_disk_cells)
 if(coarse_preserved OR NOT coarse_non_disk GREATER 0 OR NOT err MATCHES "warning: the remesh may not have"
@@ -244,12 +245,14 @@ file(WRITE ${WORK_DIR}/huge_pyramid.obj "v 0 0 0\nv 1e200 0 0\nv 1e200 1e200 0\n
                                         "f 1 2 3 4\nf 1 5 2\nf 2 5 3\nf 3 5 4\nf 4 5 1\n")
 run(0 huge_pyramid.off huge_pyramid.obj huge_pyramid.off)
 run(2 x.off --map position-normal-color ${elephant} x.off)
-run(0 c6.ply --stats --output primal --map position-normal --cell-size 0.02 colored.off c6.ply)
+# (the dual: the primal of the gradient map has parallel edges at any cell size tried,
+# 12 to 14 pairs from 0.025 down to 0.005, refused)
+run(0 c6.ply --stats --map position-normal --cell-size 0.02 colored.off c6.ply)
 string(JSON r6_vertices GET "${out}" output_vertices)
-run(0 c9.ply --stats --output primal --map position-normal-color --cell-size 0.02 colored.off c9.ply)
+run(0 c9.ply --stats --map position-normal-color --cell-size 0.02 colored.off c9.ply)
 string(JSON r9_d GET "${out}" D)
 string(JSON r9_vertices GET "${out}" output_vertices)
-run(0 cg.ply --stats --output primal --map position-normal-color-gradient --cell-size 0.02 colored.off cg.ply)
+run(0 cg.ply --stats --map position-normal-color-gradient --cell-size 0.02 colored.off cg.ply)
 string(JSON gradient_vertices GET "${out}" output_vertices)
 file(STRINGS ${WORK_DIR}/c9.ply c9_header REGEX "^property uchar red" LIMIT_COUNT 1)
 run(0 cq.off --cell-size 0.01 colored.off cq.off)
@@ -344,6 +347,15 @@ run(0 d.off --cell-size 0.01 c.ply d.off)
 # cannot store, are undone, so the output is written and reads back
 run(0 coarse.off --cell-size 0.05 ${elephant} coarse.off)
 run(0 coarse_again.off --cell-size 0.05 coarse.off coarse_again.off)
+# the primal keeps parallel edges (a bar thinner than a cell, halved by the plane x = 0:
+# the arcs where y = 2 cuts it join the same two vertices), which a file would merge
+# into an edge of four faces (camel.off, man.off: written so, exit 0): refused
+file(WRITE ${WORK_DIR}/bar.off "OFF\n8 6 0\n-0.15 0.5 0.2\n0.15 0.5 0.2\n0.15 3.5 0.2\n-0.15 3.5 0.2\n-0.15 0.5 0.5\n0.15 0.5 0.5\n0.15 3.5 0.5\n-0.15 3.5 0.5\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n")
+foreach(ext off stl)
+  run(2 bar_primal.${ext} --output primal --absolute --cell-size 1 bar.off bar_primal.${ext})
+  expect_message("the primal has 1 pair\\(s\\) of parallel edges.*smaller cell size" "thin bar, primal ${ext}")
+endforeach()
+run(0 bar_fine.off --output primal --absolute --cell-size 0.1 bar.off bar_fine.off)
 
 # target vertex count
 run(0 t.off --stats --output primal --target-vertices 3000 ${elephant} t.off)
@@ -352,6 +364,16 @@ if(output_vertices LESS 2700 OR output_vertices GREATER 3300)
   message(SEND_ERROR "--target-vertices 3000 gave ${output_vertices}")
   math(EXPR failures "${failures} + 1")
 endif()
+
+# a target just below the cap is found; one the cap forbids is refused naming the cap
+run(0 t_cap.off --stats --target-vertices 3000 --max-vertices 3300 ${elephant} t_cap.off)
+string(JSON output_vertices GET "${out}" output_vertices)
+if(output_vertices LESS 2700 OR output_vertices GREATER 3300)
+  message(SEND_ERROR "--target-vertices 3000 --max-vertices 3300 gave ${output_vertices}")
+  math(EXPR failures "${failures} + 1")
+endif()
+run(2 t_cap2.off --target-vertices 3000 --max-vertices 3100 ${elephant} t_cap2.off)
+expect_message("refused: their output is above the cap.*--max-vertices" "target under a cap")
 
 # seeded traversal
 run(0 s.off --stats --seeded --cell-size 0.01 ${elephant} s.off)
@@ -641,7 +663,8 @@ foreach(i RANGE 1 20000)
   endif()
 endforeach()
 file(WRITE ${WORK_DIR}/cone.off "${cone}${sides}${base}\n")
-run(0 cone_out.off --stats --output primal cone.off cone_out.off)
+# (the dual: the primal of this sliver of a cone has 97 pairs of parallel edges, refused)
+run(0 cone_out.off --stats cone.off cone_out.off)
 expect_json(20001 input_vertices)
 file(WRITE ${WORK_DIR}/flat.off "OFF\n4 2 0\n0 0 0\n1 0 0\n2 0 0\n3 0 0\n3 0 1 2\n3 1 3 2\n")
 run(2 x.off flat.off x.off)

@@ -625,6 +625,32 @@ void test_files_read_as_they_mean()
   CHECK(refuses(binary_stl(3, 2, 10), "stl"));
 }
 
+/// The message of the reader's refusal of `text`, or "" if it reads it.
+std::string refusal_of(const std::string& text, const std::string& ext)
+{
+  try {
+    parse(text, ext);
+  } catch(const rsr_io::Read_error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+// A refusal says what the file has: its bytes quoted whole (a NUL ended what() there:
+// "a face corner '"), and a binary STL with no record after a header that counts some
+// (it said "no face").
+void test_refusals_say_what_the_file_has()
+{
+  const std::string nul = refusal_of(std::string("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 \0x 3\n", 35), "obj");
+  CHECK(nul.find("a face corner '\\x00x' is not") != std::string::npos);
+  std::string header_only(80, ' ');
+  const std::uint32_t count = 4294967295u;
+  header_only.append(reinterpret_cast<const char*>(&count), 4);
+  CHECK(refusal_of(header_only, "stl").find("header counts 4294967295 triangles, and the file holds none") !=
+        std::string::npos);
+  std::cout << "refusals: " << nul << " / " << refusal_of(header_only, "stl") << std::endl;
+}
+
 /// OBJ statements broken over lines by a final '\\' (the specification's continuation:
 /// some exporters break long faces so) are read as one; they were refused.
 void test_obj_line_continuations()
@@ -695,5 +721,6 @@ int main()
   test_obj_corners();
   test_ply_texture_names();
   test_files_read_as_they_mean();
+  test_refusals_say_what_the_file_has();
   return report("test_file_io");
 }

@@ -115,6 +115,24 @@ void test_target_vertices(const Mesh& elephant)
   Mesh primal;
   RSR::primal_remesh(elephant, primal, RSR::parameters::number_of_target_vertices(std::size_t(4000)));
   CHECK(std::abs(double(num_vertices(primal)) - 4000.) <= 400.);
+  // A target just below the cap (which bounds the primal, about 1.2 times the dual
+  // here): the search steps to a finer size the cap refuses, and must come back between
+  // it and the last size that ran (it doubled away from it, and went back to it, until
+  // the runs ran out: "no cell size tried gives 3000 ... (the last gave 750)").
+  for(std::size_t cap : {3300, 3500}) {
+    Mesh near_cap;
+    const auto stats = RSR::remesh(elephant, near_cap, RSR::parameters::number_of_target_vertices(std::size_t(3000))
+                                                           .maximum_number(cap));
+    std::cout << "target 3000, cap " << cap << ": " << num_vertices(near_cap) << " vertices at cell size "
+              << stats.primal.cell_size << std::endl;
+    CHECK(std::abs(double(num_vertices(near_cap)) - 3000.) <= 300.);
+    CHECK(stats.primal.intersection_vertices <= cap);
+  }
+  // a cap below what the target needs: refused, and said so
+  Mesh above_cap;
+  CHECK(throws_kind([&] { RSR::remesh(elephant, above_cap, RSR::parameters::number_of_target_vertices(std::size_t(3000))
+                                                                .maximum_number(std::size_t(3100))); },
+                    RSR::Remeshing_error::Kind::TARGET_NOT_REACHED));
   // a count no cell size gives: told, not guessed
   Mesh tiny;
   CHECK(throws_kind([&] { RSR::remesh(elephant, tiny, RSR::parameters::number_of_target_vertices(std::size_t(3))); },

@@ -403,6 +403,18 @@ std::size_t number_of_border_cycles(const PolygonMesh& m)
   return cycles;
 }
 
+/// Edges joining the same two vertices as another edge, counted by vertex pairs.
+template <class PolygonMesh>
+std::size_t number_of_parallel_edges(const PolygonMesh& m)
+{
+  std::set<std::pair<std::size_t, std::size_t>> ends;
+  for(auto e : edges(m)) {
+    const std::size_t u = std::size_t(source(e, m)), v = std::size_t(target(e, m));
+    ends.insert({(std::min)(u, v), (std::max)(u, v)});
+  }
+  return num_edges(m) - ends.size();
+}
+
 /// Runs the primal remesh with `np` and checks every invariant that does not depend
 /// on resolution: valid manifold with the input's border cycles (but those no grid
 /// hyperplane crosses), valences, simple faces, one cell per face.
@@ -445,6 +457,7 @@ RSR::Statistics remesh_and_check(const Mesh& input, Mesh& output, const NP& np)
     non_simple += (seen.size() != degree || degree < 3);
   }
   CHECK_EQ(non_simple, std::size_t(0));
+  CHECK_EQ(stats.parallel_edges, number_of_parallel_edges(output));
   return stats;
 }
 

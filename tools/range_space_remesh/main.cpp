@@ -150,10 +150,14 @@ void check_remesh(const Mesh& input, const Mesh& output, const RSR::Remesh_stati
          " degenerate pieces dropped); use a smaller cell size");
   if(!CGAL::is_valid_polygon_mesh(output))
     fail("internal error: the remesh is not a valid polygon mesh; please report it");
-  if(stats.dual.parallel_edges > 0)
-    fail("at this cell size the dual has " + std::to_string(stats.dual.parallel_edges) +
-         " pair(s) of parallel edges, which a mesh file cannot store; use a smaller cell size "
-         "or --output primal");
+  // Counted on the output itself, whichever stage made them: the primal keeps them
+  // (Statistics::parallel_edges), the dual undoes most of them.
+  const std::size_t parallel_edges = RSR::internal::number_of_parallel_edges(output);
+  if(parallel_edges > 0)
+    fail("at this cell size the " + options.output_kind + " has " + std::to_string(parallel_edges) +
+         " pair(s) of parallel edges (parts of the surface thinner than a cell), which a mesh file cannot "
+         "store; use a smaller cell size" +
+         (options.output_kind == "primal" ? " or the dual output (leave out --output primal)" : " or --output primal"));
 }
 
 /// What the user can change after the library refused: appended to its message.
@@ -162,6 +166,8 @@ const char* way_out(RSR::Remeshing_error::Kind kind)
   switch(kind) {
   case RSR::Remeshing_error::Kind::OUTPUT_TOO_LARGE:
     return " (use a larger --cell-size, or raise the cap with --max-vertices)";
+  case RSR::Remeshing_error::Kind::TARGET_NOT_REACHED:
+    return " (ask for another --target-vertices, or raise the cap with --max-vertices)";
   case RSR::Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED:
     return " (leave out --preserve-topology to accept the change, or raise the cap with --max-vertices)";
   default:

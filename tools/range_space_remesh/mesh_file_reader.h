@@ -48,7 +48,24 @@ namespace rsr_io {
 /// Why a file cannot be read, in one line.
 struct Read_error : std::runtime_error
 {
-  using std::runtime_error::runtime_error;
+  /// `message` with its control characters escaped (\xNN): it quotes bytes of the file,
+  /// and a NUL would end what() there, a newline break the program's one-line message.
+  explicit Read_error(const std::string& message) : std::runtime_error(escaped(message)) {}
+
+private:
+  static std::string escaped(const std::string& message)
+  {
+    std::string out;
+    for(const unsigned char c : message) {
+      if(c < 0x20 || c == 0x7f) {
+        static const char digits[] = "0123456789abcdef";
+        out += {'\\', 'x', digits[c >> 4], digits[c & 15]};
+      } else {
+        out += char(c);
+      }
+    }
+    return out;
+  }
 };
 
 /// A point's coordinates as a hash key. Boost's hash gives 0 and -0 one value, as
@@ -1105,6 +1122,9 @@ inline std::uint32_t binary_stl_triangles(std::string_view text, const std::stri
   std::uint32_t count = 0;
   std::memcpy(&count, text.data() + 80, 4); // STL is little endian, as the hosts we build for
   const std::uint64_t records = (text.size() - 84) / 50, left = (text.size() - 84) % 50;
+  if(records == 0 && count > 0) // nothing to read: say what the header promised
+    throw Read_error(name + ": its binary STL header counts " + std::to_string(count) +
+                     " triangles, and the file holds none");
   if(left == 0 && records != count && records <= UINT32_MAX) {
     notes.push_back("its binary STL header counts " + std::to_string(count) + " triangles, the file holds " +
                     std::to_string(records) + ": all " + std::to_string(records) + " are read");

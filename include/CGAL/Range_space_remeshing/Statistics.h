@@ -51,6 +51,12 @@ struct Statistics
   std::size_t non_simple_faces = 0;
   /// output pieces too small to form a polygon mesh (fewer than 4 vertices), dropped
   std::size_t dropped_pieces = 0;
+  /// edges of the output joining the same two vertices as another edge: where a part
+  /// of the surface thinner than a cell crosses a grid hyperplane, the faces of the
+  /// cells on either side share two corners. `out` keeps them apart, but a face-list
+  /// file (OFF, OBJ, PLY, STL) cannot: written as they are, they read back as edges
+  /// of four faces. A smaller cell size resolves the part.
+  std::size_t parallel_edges = 0;
   /// number of seeds the traversal started from (SEEDED) or vertices scanned (COMPLETE_SCAN)
   std::size_t seeds = 0;
 

@@ -69,7 +69,9 @@ Every output vertex is where the mapped surface crosses a grid edge (a
 codimension-2 face of the grid); it has valence 4, except the two ends of a merged
 digon (valence 3, counted in `Statistics::digons`). Every output face is the piece
 of the surface inside one grid cell, so every coordinate of f varies by at most the
-cell size over it. Positions (and, on request, normals) of output vertices are
+cell size over it. Where a part of the surface thinner than a cell crosses a grid
+hyperplane, two edges of `out` may join the same two vertices (kept apart in `out`,
+counted in `Statistics::parallel_edges`; a face-list file cannot store them). Positions (and, on request, normals) of output vertices are
 sampled from `tm` at the crossing points; f is never inverted.
 
 All combinatorial decisions are exact predicates on the mapped input coordinates,

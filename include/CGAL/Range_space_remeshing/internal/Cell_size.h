@@ -24,7 +24,9 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 #include <string>
 
 namespace CGAL {
@@ -125,12 +127,15 @@ inline bool is_near_target(std::size_t count, std::size_t target)
 /// Searches a cell size, from `h`, whose run gives `target` output vertices within
 /// `target_tolerance`: the count goes roughly as h^-2, refined by secant steps in
 /// log-log scale. `run(h)` does a run and returns its vertex count; the last run is the
-/// one found. A cell size refused as too small is doubled. `keeps_topology`: the runs
-/// refine the cell size until the topology is kept (said if the count stays above).
+/// one found. A cell size refused as too small (the output cap) is doubled, and no
+/// later step goes back to it: they land between it and the last size that ran, so a
+/// target just below the cap is found. `keeps_topology`: the runs refine the cell size
+/// until the topology is kept (said if the count stays above).
 template <class Run>
 double search_cell_size(double h, std::size_t target, const Run& run, bool keeps_topology)
 {
   double previous_h = 0, previous_log_n = 0, n = 0;
+  double capped = 0; // the largest cell size refused by the output cap
   const double log_target = std::log(double(target));
   for(int attempt = 0; attempt < maximum_target_runs; ++attempt) {
     try {
@@ -138,8 +143,9 @@ double search_cell_size(double h, std::size_t target, const Run& run, bool keeps
     } catch(const Remeshing_error& error) {
       if(error.kind() != Remeshing_error::Kind::OUTPUT_TOO_LARGE)
         throw;
+      capped = (std::max)(capped, h);
+      h = previous_h > capped ? std::sqrt(capped * previous_h) : 2 * h;
       previous_h = 0;
-      h *= 2;
       continue;
     }
     if(is_near_target(std::size_t(n), target))
@@ -153,11 +159,17 @@ double search_cell_size(double h, std::size_t target, const Run& run, bool keeps
     previous_h = h;
     previous_log_n = std::log(n);
     h = std::exp(std::log(h) + (log_target - std::log(n)) / slope);
+    if(h <= capped) // back to a size the cap refused: halfway (in log scale) from the last
+      h = std::sqrt(capped * (std::max)(previous_h, capped));
   }
   const bool kept_finer = keeps_topology && n > double(target);
+  std::ostringstream capped_note;
+  if(capped > 0)
+    capped_note << "; cells of " << std::setprecision(3) << capped
+                << " and smaller were refused: their output is above the cap on output vertices";
   throw Remeshing_error("no cell size tried gives " + std::to_string(target) + " output vertices within " +
                             std::to_string(int(100 * target_tolerance)) + "% (the last gave " +
-                            std::to_string(std::size_t(n)) + ")" +
+                            std::to_string(std::size_t(n)) + ")" + capped_note.str() +
                             (kept_finer ? "; keeping the input's topology (preserve_topology) needs smaller "
                                           "cells than that count: ask for more vertices, or allow the topology "
                                           "to change"

@@ -24,6 +24,9 @@
 //   merged into one edge; the two vertices get valence 3, V - E + F is unchanged;
 // * a face whose boundary visits a vertex twice is split by a chord across the pinch;
 // * a piece that still has a face of degree below 3 is dropped.
+// Parallel edges (two edges joining the same two vertices, around a part of the
+// surface thinner than a cell) are kept, as a halfedge mesh can hold them; they are
+// counted, for a face-list file cannot (it would read them back as one edge).
 
 #include <CGAL/Range_space_remeshing/internal/Union_find.h>
 
@@ -78,6 +81,9 @@ public:
   bool is_boundary(std::uint32_t v) const { return boundary_[v]; }
   std::size_t number_of_non_simple_faces() const { return non_simple_faces_; }
   std::size_t number_of_dropped_pieces() const { return dropped_pieces_; }
+  /// edges of the output that join the same two vertices as another one (k edges
+  /// between two vertices count k - 1)
+  std::size_t number_of_parallel_edges() const { return parallel_edges_; }
 
   static constexpr std::uint32_t none = std::uint32_t(-1);
 
@@ -321,6 +327,7 @@ private:
       if(!kept_vertex_[halfedges_[face_halfedge_[f]].target])
         face_halfedge_[f] = none;
     count_output_topology(parent);
+    count_parallel_edges();
     // report only the repairs that are in the output
     digons_ = std::count_if(digon_vertices_.begin(), digon_vertices_.end(),
                             [this](std::uint32_t v) { return bool(kept_vertex_[v]); });
@@ -348,6 +355,19 @@ private:
                                                 [](std::uint32_t h) { return h != none; }));
   }
 
+  void count_parallel_edges()
+  {
+    std::vector<std::uint64_t> ends; // the two vertices of each kept edge, lower first
+    for(std::uint32_t h = 0; h < halfedges_.size(); ++h) {
+      const std::uint32_t u = source(h), v = halfedges_[h].target;
+      if(u < v && kept_vertex_[v])
+        ends.push_back(std::uint64_t(u) << 32 | v);
+    }
+    std::sort(ends.begin(), ends.end());
+    parallel_edges_ = std::size_t(ends.end() - ends.begin()) -
+                      std::size_t(std::unique(ends.begin(), ends.end()) - ends.begin());
+  }
+
   std::uint32_t number_of_vertices_;
   std::vector<bool> boundary_;
   std::vector<Traced_face_corner> traced_face_corners_;
@@ -367,7 +387,7 @@ private:
   std::vector<std::uint32_t> unsplittable_faces_;
   std::vector<std::uint32_t> digon_vertices_, boundary_digon_vertices_, split_vertices_; // one vertex of each repair
 
-  std::size_t digons_ = 0, boundary_digons_ = 0, non_simple_faces_ = 0, dropped_pieces_ = 0;
+  std::size_t digons_ = 0, boundary_digons_ = 0, non_simple_faces_ = 0, dropped_pieces_ = 0, parallel_edges_ = 0;
 };
 
 } // namespace internal

@@ -178,6 +178,7 @@ std::unique_ptr<Primal_complex> trace_primal_complex(const TriangleMesh& tm, Tra
   stats.boundary_corners = tracer.number_of_corners();
   stats.non_simple_faces = complex->number_of_non_simple_faces();
   stats.dropped_pieces = complex->number_of_dropped_pieces();
+  stats.parallel_edges = complex->number_of_parallel_edges();
   return complex;
 }
 
