@@ -4,6 +4,11 @@
 #include "test_support.h"
 
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/IO/OFF.h>
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+
+#include <sstream>
 
 using namespace test;
 namespace params = CGAL::parameters;
@@ -76,5 +81,26 @@ int main(int argc, char** argv)
     CHECK_EQ(num_vertices(seeded_out), num_vertices(complete_out));
     CHECK_EQ(euler_characteristic(seeded_out), euler_characteristic(elephant));
   }
+  // Coarse cells on thin parts: the primal's parallel edges are split on their arcs, so
+  // that its faces, written to OFF and read back by CGAL as a soup, form a polygon
+  // mesh (before: bones at 0.05 had 2 parallel edges, read back as edges of four faces)
+  std::size_t split = 0;
+  for(const std::string name : {"bones", "elephant", "bull"})
+    for(double relative : {0.05, 0.07, 0.1}) {
+      Mesh input = load(folder, name), out;
+      const auto stats = remesh_and_check(input, out, params::grid_spacing(relative * bbox_diagonal(input)));
+      split += stats.split_parallel_edges;
+      CHECK_EQ(stats.parallel_edges, std::size_t(0));
+      std::stringstream file;
+      CHECK(CGAL::IO::write_OFF(file, out, params::stream_precision(17)));
+      std::vector<Point> points;
+      std::vector<std::vector<std::size_t>> polygons;
+      CHECK(CGAL::IO::read_OFF(file, points, polygons));
+      CHECK_EQ(points.size(), num_vertices(out));
+      CHECK_EQ(polygons.size(), num_faces(out));
+      CHECK(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons));
+    }
+  std::cout << "coarse primal remeshes: " << split << " parallel edges split" << std::endl;
+  CHECK(split >= 2);
   return report("test_cgal_meshes");
 }

@@ -347,14 +347,26 @@ run(0 d.off --cell-size 0.01 c.ply d.off)
 # cannot store, are undone, so the output is written and reads back
 run(0 coarse.off --cell-size 0.05 ${elephant} coarse.off)
 run(0 coarse_again.off --cell-size 0.05 coarse.off coarse_again.off)
-# the primal keeps parallel edges (a bar thinner than a cell, halved by the plane x = 0:
-# the arcs where y = 2 cuts it join the same two vertices), which a file would merge
-# into an edge of four faces (camel.off, man.off: written so, exit 0): refused
+# a bar thinner than a cell, halved by the plane x = 0: the arcs where y = 2 cuts it
+# join the same two vertices; written as they were, a file reads them back as an edge
+# of four faces (camel.off, man.off: so, exit 0). One is split on its arc; the files
+# read back strictly (no repair) with the vertex
 file(WRITE ${WORK_DIR}/bar.off "OFF\n8 6 0\n-0.15 0.5 0.2\n0.15 0.5 0.2\n0.15 3.5 0.2\n-0.15 3.5 0.2\n-0.15 0.5 0.5\n0.15 0.5 0.5\n0.15 3.5 0.5\n-0.15 3.5 0.5\n4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 1 2 6 5\n4 2 3 7 6\n4 3 0 4 7\n")
 foreach(ext off stl)
-  run(2 bar_primal.${ext} --output primal --absolute --cell-size 1 bar.off bar_primal.${ext})
-  expect_message("the primal has 1 pair\\(s\\) of parallel edges.*smaller cell size" "thin bar, primal ${ext}")
+  run(0 bar_primal.${ext} --stats --output primal --absolute --cell-size 1 bar.off bar_primal.${ext})
+  expect_json(1 split_parallel_edges)
+  expect_json(7 output_vertices)
+  run(0 bar_again.off --stats --strict --output primal bar_primal.${ext} bar_again.off)
+  expect_json(7 input_vertices)
+  expect_json(OFF input_repairs repaired)
 endforeach()
+# the faces of a coarse primal share corners that are not neighbours in one of them:
+# split into triangles, some edges would have more than two (bones at 0.05: written
+# so, 6 non-manifold edges, exit 0); refused, and the polygons are written (read back
+# as a polygon mesh by test_cgal_meshes)
+run(2 bones_coarse.stl --output primal --cell-size 0.05 ${MESH_DIR}/bones.off bones_coarse.stl)
+expect_message("cannot be split into triangles without [0-9]+ edge.*\\.off" "coarse primal to STL")
+run(0 bones_coarse.off --output primal --cell-size 0.05 ${MESH_DIR}/bones.off bones_coarse.off)
 run(0 bar_fine.off --output primal --absolute --cell-size 0.1 bar.off bar_fine.off)
 
 # target vertex count

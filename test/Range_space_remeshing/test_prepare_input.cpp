@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -186,6 +187,63 @@ void test_non_convex_quadrilateral_around_a_vertex_of_valence_2()
   }
 }
 
+/// Edges of more than two triangles in a soup of triangles.
+std::size_t edges_of_more_than_two(const Polygons& triangles)
+{
+  std::map<std::pair<std::size_t, std::size_t>, int> uses;
+  for(const auto& t : triangles)
+    for(std::size_t i = 0; i < 3; ++i)
+      ++uses[std::minmax(t[i], t[(i + 1) % 3])];
+  return std::size_t(std::count_if(uses.begin(), uses.end(), [](const auto& u) { return u.second > 2; }));
+}
+
+/// Faces that share corners which are not neighbours in one of them (the primal of a
+/// bar thinner than a cell, its parallel edge split by vertex 6): a fan from the first
+/// corner of (4, 6, 2, 5, 0) took 4-2, an edge of the other faces, as a diagonal (an
+/// edge of four triangles); the fan starts where its diagonals are free. And a
+/// non-convex hexagon whose constrained triangulation takes a diagonal that is an edge
+/// of the mesh: the fan of a corner that sees the others, with free diagonals.
+void test_diagonals_that_are_edges()
+{
+  const std::vector<Point> bar{Point(0, 3, 0.2), Point(0, 1, 0.5), Point(0, 2, 0.5), Point(0, 1, 0.2),
+                               Point(0, 2, 0.2), Point(0, 3, 0.5), Point(-0.075, 2, 0.5)};
+  const Polygons bar_faces{{5, 2, 4, 0}, {4, 6, 2, 5, 0}, {3, 4, 2, 1}, {2, 6, 4, 3, 1}};
+  Polygons polygons = bar_faces;
+  RSR::internal::split_polygons(bar, polygons);
+  CHECK_EQ(polygons.size(), std::size_t(10));
+  CHECK_EQ(edges_of_more_than_two(polygons), std::size_t(0));
+  // a non-convex hexagon (reflex corner 4) in z = 0, and a triangle above it on the two
+  // ends of a diagonal its constrained triangulation takes: that diagonal is an edge
+  const std::vector<Point> hexagon{Point(0, 0, 0), Point(2, -1, 0), Point(4, 0, 0), Point(4, 3, 0),
+                                   Point(2, 2, 0), Point(0, 3, 0), Point(2, 1, 5)};
+  const std::vector<std::size_t> outline{0, 1, 2, 3, 4, 5};
+  Polygons alone{outline};
+  RSR::internal::split_polygons(hexagon, alone);
+  auto diagonals_of = [&](const Polygons& triangles) {
+    std::set<std::pair<std::size_t, std::size_t>> diagonals;
+    for(const auto& t : triangles)
+      for(std::size_t i = 0; i < 3 && std::count(t.begin(), t.end(), std::size_t(6)) == 0; ++i) {
+        const std::pair<std::size_t, std::size_t> e = std::minmax(t[i], t[(i + 1) % 3]);
+        if(e.second < 6 && e.second - e.first != 1 && e != std::make_pair(std::size_t(0), std::size_t(5)))
+          diagonals.insert(e);
+      }
+    return diagonals;
+  };
+  CHECK_EQ(alone.size(), std::size_t(4));
+  const auto taken = *diagonals_of(alone).begin();
+  Polygons with_edge{outline, {taken.second, taken.first, 6}};
+  RSR::internal::split_polygons(hexagon, with_edge);
+  CHECK_EQ(with_edge.size(), std::size_t(5));
+  CHECK_EQ(diagonals_of(with_edge).count(taken), std::size_t(0));
+  CHECK_EQ(edges_of_more_than_two(with_edge), std::size_t(0));
+  // every triangle of the hexagon turns as it does (none folds over corner 4)
+  using Point_2 = CGAL::Kernel_traits<Point>::Kernel::Point_2;
+  for(const auto& t : with_edge)
+    if(t[2] != 6 && t[0] != 6 && t[1] != 6)
+      CHECK(CGAL::orientation(Point_2(hexagon[t[0]].x(), hexagon[t[0]].y()), Point_2(hexagon[t[1]].x(), hexagon[t[1]].y()),
+                              Point_2(hexagon[t[2]].x(), hexagon[t[2]].y())) == CGAL::COUNTERCLOCKWISE);
+}
+
 /// The linear sort of the soup's edges gives the order of a comparison sort by (key,
 /// corner): random soups of triangles to hexagons over few points (repeated keys, some
 /// runs of more than two) with a hub named by many polygons (a run longer than the
@@ -306,6 +364,7 @@ void test_polygons_crossing_themselves()
 
 int main(int argc, char** argv)
 {
+  test_diagonals_that_are_edges();
   if(argc < 2) {
     std::cerr << "usage: test_prepare_input MESH_FOLDER" << std::endl;
     return EXIT_FAILURE;

@@ -444,7 +444,7 @@ RSR::Statistics remesh_and_check(const Mesh& input, Mesh& output, const NP& np)
   for(auto v : vertices(output))
     deficit += (CGAL::is_border(v, output) ? 3 : 4) - long(CGAL::halfedges_around_target(v, output).size());
   CHECK_EQ(deficit, 2 * long(stats.digons + stats.boundary_digons) - 2 * long(stats.non_simple_faces) +
-                        long(stats.boundary_corners));
+                        long(stats.boundary_corners) + 2 * long(stats.split_parallel_edges));
   // faces are simple polygons
   std::size_t non_simple = 0;
   for(auto f : faces(output)) {

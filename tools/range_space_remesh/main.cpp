@@ -136,6 +136,24 @@ bool has_one_normal(const Mesh& input)
   return true;
 }
 
+/// The edges of more than two triangles once the faces of `mesh` are split into
+/// triangles as the STL writer splits them (the split avoids the edges it can).
+std::size_t edges_of_more_than_two_triangles(const Mesh& mesh)
+{
+  std::vector<Mesh::Point> points;
+  std::vector<std::vector<std::size_t>> triangles;
+  rsr_io::internal::triangle_soup_of(mesh, points, triangles);
+  std::vector<std::pair<std::size_t, std::size_t>> edges;
+  for(const auto& t : triangles)
+    for(std::size_t i = 0; i < 3; ++i)
+      edges.push_back(std::minmax(t[i], t[(i + 1) % 3]));
+  std::sort(edges.begin(), edges.end());
+  std::size_t shared = 0;
+  for(std::size_t i = 2; i < edges.size(); ++i)
+    shared += (edges[i] == edges[i - 2] && (i + 1 == edges.size() || edges[i + 1] != edges[i])) ? 1 : 0;
+  return shared;
+}
+
 /// Refuses a remesh no mesh file can hold.
 void check_remesh(const Mesh& input, const Mesh& output, const RSR::Remesh_statistics& stats, const Options& options)
 {
@@ -150,14 +168,21 @@ void check_remesh(const Mesh& input, const Mesh& output, const RSR::Remesh_stati
          " degenerate pieces dropped); use a smaller cell size");
   if(!CGAL::is_valid_polygon_mesh(output))
     fail("internal error: the remesh is not a valid polygon mesh; please report it");
-  // Counted on the output itself, whichever stage made them: the primal keeps them
-  // (Statistics::parallel_edges), the dual undoes most of them.
+  // Counted on the output itself, whichever stage made them: the primal splits them
+  // where it can (Statistics::split_parallel_edges), the dual undoes most of them.
   const std::size_t parallel_edges = RSR::internal::number_of_parallel_edges(output);
   if(parallel_edges > 0)
     fail("at this cell size the " + options.output_kind + " has " + std::to_string(parallel_edges) +
          " pair(s) of parallel edges (parts of the surface thinner than a cell), which a mesh file cannot "
          "store; use a smaller cell size" +
          (options.output_kind == "primal" ? " or the dual output (leave out --output primal)" : " or --output primal"));
+  if(!rsr_io::format_of(options.output)->stores_polygons) {
+    const std::size_t shared = edges_of_more_than_two_triangles(output);
+    if(shared > 0)
+      fail("the remesh's faces cannot be split into triangles without " + std::to_string(shared) +
+           " edge(s) of more than two triangles (faces that share corners beside a part thinner than a cell); "
+           "write a format that stores polygons (.off, .obj, .ply) or use a smaller cell size");
+  }
 }
 
 /// What the user can change after the library refused: appended to its message.

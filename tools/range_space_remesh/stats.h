@@ -97,6 +97,7 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
   j["digons"] = s.digons;
   j["non_simple_faces"] = s.non_simple_faces;
   j["dropped_pieces"] = s.dropped_pieces;
+  j["split_parallel_edges"] = s.split_parallel_edges;
   j["input_border_cycles"] = border_cycles(input);
   j["output_border_cycles"] = border_cycles(output);
   j["boundary_digons"] = s.boundary_digons;

@@ -51,11 +51,14 @@ struct Statistics
   std::size_t non_simple_faces = 0;
   /// output pieces too small to form a polygon mesh (fewer than 4 vertices), dropped
   std::size_t dropped_pieces = 0;
-  /// edges of the output joining the same two vertices as another edge: where a part
-  /// of the surface thinner than a cell crosses a grid hyperplane, the faces of the
-  /// cells on either side share two corners. `out` keeps them apart, but a face-list
-  /// file (OFF, OBJ, PLY, STL) cannot: written as they are, they read back as edges
-  /// of four faces. A smaller cell size resolves the part.
+  /// edges joining the same two vertices as another edge (where a part of the surface
+  /// thinner than a cell crosses a grid hyperplane, the faces of the cells on either
+  /// side share two corners), split at a point of their arc by a vertex of valence 2:
+  /// a face-list file (OFF, OBJ, PLY, STL) could not tell the two edges apart (it
+  /// would read them back as one edge of four faces)
+  std::size_t split_parallel_edges = 0;
+  /// parallel edges left in the output (an edge with no arc to split it on: a chord
+  /// of a split face, a border edge); `out` keeps them apart, a face-list file cannot
   std::size_t parallel_edges = 0;
   /// number of seeds the traversal started from (SEEDED) or vertices scanned (COMPLETE_SCAN)
   std::size_t seeds = 0;

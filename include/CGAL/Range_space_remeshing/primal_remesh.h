@@ -70,9 +70,11 @@ codimension-2 face of the grid); it has valence 4, except the two ends of a merg
 digon (valence 3, counted in `Statistics::digons`). Every output face is the piece
 of the surface inside one grid cell, so every coordinate of f varies by at most the
 cell size over it. Where a part of the surface thinner than a cell crosses a grid
-hyperplane, two edges of `out` may join the same two vertices (kept apart in `out`,
-counted in `Statistics::parallel_edges`; a face-list file cannot store them). Positions (and, on request, normals) of output vertices are
-sampled from `tm` at the crossing points; f is never inverted.
+hyperplane, two edges join the same two vertices; a face-list file could not tell
+them apart, so one of them is split by a vertex of valence 2 at a point of its arc
+(counted in `Statistics::split_parallel_edges`). Positions (and, on request,
+normals) of output vertices are sampled from `tm` at the crossing points (those
+points of arcs); f is never inverted.
 
 All combinatorial decisions are exact predicates on the mapped input coordinates,
 with a symbolic perturbation of the grid for degenerate positions, so the result

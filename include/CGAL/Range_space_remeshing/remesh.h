@@ -151,7 +151,9 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
   };
   // The primal remesh, and whether it has faces.
   auto remesh_primal = [&](const auto& np_primal_out) {
-    stats.primal = primal_remesh_at(h, tm, primal, np, np_primal_out, No_inspection(), progress, ConcurrencyTag());
+    // parallel edges kept: the dual undoes them (a vertex of valence 2 would give it a digon)
+    stats.primal = primal_remesh_at(h, tm, primal, np, np_primal_out, No_inspection(), progress, ConcurrencyTag(),
+                                    Parallel_edges::KEEP);
     frame = Working_frame::of(primal, primal.points());
     frame.move_into(primal, primal.points());
     planes_pool.decompositions.reserve(num_faces(primal)); // one per dual vertex of a face

@@ -105,7 +105,88 @@ public:
 
   std::size_t number_of_tracing_steps() const { return tracing_steps_; }
 
+  /// A point of the surface: a triangle and barycentric coordinates there.
+  struct Surface_point
+  {
+    std::uint32_t face_id;
+    std::array<double, 3> w;
+  };
+
+  /// A point of the arc leaving the (inner) vertex `v`, at barycentric coordinates
+  /// `w_v` in its triangle, through `slot`: halfway along the first piece of the arc
+  /// of non-zero length (its piece in v's triangle, unless v lies on the edge it leaves
+  /// by), up to where it leaves that triangle or meets a wall of its box. The output
+  /// splits a parallel edge there (see Primal_output.h): a point of the surface inside
+  /// the cell of the faces on the arc's sides. Doubles only: it places a vertex, it
+  /// decides nothing.
+  Surface_point point_along_arc(const Vertex& v, int slot, const std::array<double, 3>& w_v)
+  {
+    const Arc arc = start_arc(v, slot);
+    Surface_point from{v.face_id, w_v};
+    for(std::size_t step = 0; step <= num_faces(input_.mesh()); ++step) {
+      const Triangle t = input_.load(from.face_id);
+      const int e = exit_edge(t, arc.P, arc.level, arc.sigma);
+      const double s = (std::min)((std::max)(Predicates::crossing_parameter(*t.p[e], *t.p[(e + 1) % 3], arc.P,
+                                                                            double(arc.level)), 0.), 1.);
+      std::array<double, 3> exit = {{0, 0, 0}};
+      exit[e] = 1 - s;
+      exit[(e + 1) % 3] = s;
+      const double reach = part_inside_box(t, arc, from.w, exit);
+      double length = 0; // of the piece, in barycentric coordinates
+      for(int c = 0; c < 3; ++c)
+        length = (std::max)(length, reach * std::abs(exit[c] - from.w[c]));
+      const std::uint32_t next = input_.record_of(from.face_id).neighbour[e];
+      if(length > 1e-9 || reach < 1 || next == Input::border) {
+        for(int c = 0; c < 3; ++c)
+          from.w[c] += 0.5 * reach * (exit[c] - from.w[c]);
+        return from;
+      }
+      input_.load(next); // recorded (the arc went through it), but say so
+      from = {next, same_point_across(from.face_id, e, s, next)};
+    }
+    return from;
+  }
+
 private:
+  /// The part of the way from `from` to `to` (barycentric coordinates in t) before the
+  /// arc meets a wall of its box.
+  double part_inside_box(const Triangle& t, const Arc& arc, const std::array<double, 3>& from,
+                         const std::array<double, 3>& to) const
+  {
+    double reach = 1;
+    for(int q = 0; q < D; ++q) {
+      if(q == arc.P)
+        continue;
+      double a = 0, b = 0;
+      for(int c = 0; c < 3; ++c) {
+        a += from[c] * (*t.p[c])[q];
+        b += to[c] * (*t.p[c])[q];
+      }
+      if(a == b)
+        continue;
+      const double r = ((b > a ? arc.hi_wall[q] : arc.lo_wall[q]) - a) / (b - a);
+      if(r > 0 && r < reach)
+        reach = r;
+    }
+    return reach;
+  }
+
+  /// The point at parameter s of edge e of face f (from corner e to corner e + 1), in
+  /// barycentric coordinates of its neighbour g across that edge.
+  std::array<double, 3> same_point_across(std::uint32_t f, int e, double s, std::uint32_t g) const
+  {
+    const auto& corners = input_.corners_of(f);
+    const auto& other = input_.corners_of(g);
+    std::array<double, 3> w = {{0, 0, 0}};
+    for(int c = 0; c < 3; ++c) {
+      if(other[c] == corners[e])
+        w[c] = 1 - s;
+      else if(other[c] == corners[(e + 1) % 3])
+        w[c] = s;
+    }
+    return w;
+  }
+
   void trace_arcs_of(std::uint32_t v, bool create_at_arc_ends)
   {
     if(!vertices_[v].has_cell)

@@ -119,6 +119,17 @@ public:
   void prefetch_record_of(const Vertex& v) const { sampler_.prefetch_record_of(v); }
   void prefetch_corners_of(const Vertex& v) const { sampler_.prefetch_corners_of(v); }
   std::array<double, 3> barycentric_coordinates(const Vertex& v) const { return sampler_.barycentric_coordinates(v); }
+  /// A point of the arc leaving the inner vertex `v` through `slot`, in barycentric
+  /// coordinates of v's triangle (see `Arc_tracer::point_along_arc()`).
+  auto point_along_arc(const Vertex& v, int slot)
+  {
+    return tracer_.point_along_arc(v, slot, sampler_.barycentric_coordinates(v));
+  }
+  /// The input corners of the triangle `face_id`, in the order of barycentric coordinates.
+  std::array<vertex_descriptor, 3> corners_of_face(std::uint32_t face_id) const
+  {
+    return sampler_.corners_of_face(face_id);
+  }
 
   // ---------------------------------------------------------------- topology check
   Input& input() { return input_; }

@@ -134,23 +134,74 @@ Index_triangles triangulate_simple_polygon(const std::vector<Point>& corners)
   return triangles;
 }
 
+/// Whether triangles of a polygon (indices into its corners) have a diagonal that is
+/// `taken`: an edge of the mesh, or a diagonal of a polygon split before.
+template <class Polygon>
+bool uses_a_taken_diagonal(const Index_triangles& triangles, const Polygon& polygon, const Index_pairs& taken)
+{
+  const std::size_t n = polygon.size();
+  for(const auto& t : triangles)
+    for(int i = 0; i < 3; ++i) {
+      const std::size_t a = t[i], b = t[(i + 1) % 3];
+      const bool side = (a + 1) % n == b || (b + 1) % n == a;
+      if(!side && taken.count(std::minmax(std::size_t(polygon[a]), std::size_t(polygon[b]))))
+        return true;
+    }
+  return false;
+}
+
+/// A fan of a simple polygon (seen along `Projection`'s axis) from a corner that sees
+/// all the others (every triangle turns as the polygon does, so none leaves it) and
+/// whose diagonals are all free; empty if there is none. Where the constrained
+/// triangulation takes an edge of the mesh as a diagonal (two faces sharing two
+/// corners that are not neighbours in one of them), it would give an edge of more
+/// than two triangles.
+template <class Projection, class Point, class Polygon>
+Index_triangles star_fan_with_free_diagonals(const std::vector<Point>& corners, const Polygon& polygon,
+                                             const Index_pairs& taken)
+{
+  const std::size_t n = corners.size();
+  const CGAL::Orientation turn = CGAL::orientation_2(corners.begin(), corners.end(), Projection());
+  const auto orientation = Projection().orientation_2_object();
+  for(std::size_t apex = 0; apex < n; ++apex) {
+    Index_triangles fan;
+    for(std::size_t i = 1; i + 1 < n; ++i) {
+      const std::size_t b = (apex + i) % n, c = (apex + i + 1) % n;
+      if(orientation(corners[apex], corners[b], corners[c]) != turn ||
+         (i > 1 && taken.count(std::minmax(std::size_t(polygon[apex]), std::size_t(polygon[b])))))
+        break;
+      fan.push_back({apex, b, c});
+    }
+    if(fan.size() == n - 2)
+      return fan;
+  }
+  return {};
+}
+
 /// The triangles of a polygon with a reflex corner, seen along `Projection`'s axis,
 /// or empty if it is convex there (CGAL's test: consistent turns, once around) or not
 /// simple (it crosses itself: no triangulation stays inside it, and CGAL's would have
 /// to construct the crossings).
-template <class Projection, class Point>
-Index_triangles triangulate_if_non_convex(const std::vector<Point>& corners)
+template <class Projection, class Point, class Polygon>
+Index_triangles triangulate_if_non_convex(const std::vector<Point>& corners, const Polygon& polygon,
+                                          const Index_pairs& taken)
 {
   if(CGAL::is_convex_2(corners.begin(), corners.end(), Projection()) ||
      !CGAL::is_simple_2(corners.begin(), corners.end(), Projection()))
     return {};
-  return triangulate_simple_polygon<Projection>(corners);
+  Index_triangles triangles = triangulate_simple_polygon<Projection>(corners);
+  if(!triangles.empty() && uses_a_taken_diagonal(triangles, polygon, taken)) {
+    Index_triangles fan = star_fan_with_free_diagonals<Projection>(corners, polygon, taken);
+    if(!fan.empty())
+      triangles = std::move(fan);
+  }
+  return triangles;
 }
 
 /// The triangles of a non-convex simple polygon (as indices into `points`) in the
 /// plane where it is widest; empty for a convex polygon, or one that is not simple.
 template <class PointRange, class Polygon>
-Index_triangles triangulate_non_convex(const PointRange& points, const Polygon& polygon)
+Index_triangles triangulate_non_convex(const PointRange& points, const Polygon& polygon, const Index_pairs& taken)
 {
   using Point = typename PointRange::value_type;
   using K = typename CGAL::Kernel_traits<Point>::Kernel;
@@ -160,9 +211,9 @@ Index_triangles triangulate_non_convex(const PointRange& points, const Polygon& 
     corners.push_back(points[v]);
   Index_triangles triangles;
   switch(axis_most_normal(corners)) {
-  case 0: triangles = triangulate_if_non_convex<CGAL::Projection_traits_yz_3<K>>(corners); break;
-  case 1: triangles = triangulate_if_non_convex<CGAL::Projection_traits_xz_3<K>>(corners); break;
-  default: triangles = triangulate_if_non_convex<CGAL::Projection_traits_xy_3<K>>(corners); break;
+  case 0: triangles = triangulate_if_non_convex<CGAL::Projection_traits_yz_3<K>>(corners, polygon, taken); break;
+  case 1: triangles = triangulate_if_non_convex<CGAL::Projection_traits_xz_3<K>>(corners, polygon, taken); break;
+  default: triangles = triangulate_if_non_convex<CGAL::Projection_traits_xy_3<K>>(corners, polygon, taken); break;
   }
   for(auto& triangle : triangles)
     for(std::size_t& corner : triangle)
@@ -187,9 +238,30 @@ bool split_along_first_diagonal(const PointRange& points, const Polygon& p, Inde
   return first;
 }
 
+/// The corner of polygon `p` to split it from as a fan: the first whose diagonals are
+/// all free (neither an edge nor a diagonal taken: two faces sharing two corners that
+/// are not neighbours in one of them, as beside a split parallel edge of the primal,
+/// would give an edge of more than two triangles), or the first corner if none is or
+/// the polygon is too large to look (a quadratic search).
+template <class Polygon>
+std::size_t fan_corner(const Polygon& p, const Index_pairs& taken)
+{
+  constexpr std::size_t largest_searched = 32;
+  if(taken.empty() || p.size() > largest_searched)
+    return 0;
+  for(std::size_t apex = 0; apex < p.size(); ++apex) {
+    bool free = true;
+    for(std::size_t i = 2; i + 1 < p.size() && free; ++i)
+      free = !taken.count(std::minmax(std::size_t(p[apex]), std::size_t(p[(apex + i) % p.size()])));
+    if(free)
+      return apex;
+  }
+  return 0;
+}
+
 /// The triangles of a convex polygon (or of one that crosses itself, which no split
 /// mends): a quadrilateral along a diagonal (see above), a larger polygon as a fan
-/// from its first corner.
+/// from a corner whose diagonals are free (see above).
 template <class PointRange, class Polygon>
 Index_triangles split_convex(const PointRange& points, const Polygon& p, Index_pairs& taken)
 {
@@ -198,9 +270,13 @@ Index_triangles split_convex(const PointRange& points, const Polygon& p, Index_p
       return {{p[0], p[1], p[2]}, {p[0], p[2], p[3]}};
     return {{p[1], p[2], p[3]}, {p[1], p[3], p[0]}};
   }
+  const std::size_t apex = fan_corner(p, taken), k = p.size();
   Index_triangles fan;
-  for(std::size_t i = 1; i + 1 < p.size(); ++i)
-    fan.push_back({p[0], p[i], p[i + 1]});
+  for(std::size_t i = 1; i + 1 < k; ++i) {
+    fan.push_back({p[apex], p[(apex + i) % k], p[(apex + i + 1) % k]});
+    if(!taken.empty() && i > 1)
+      taken.insert(std::minmax(std::size_t(p[apex]), std::size_t(p[(apex + i) % k])));
+  }
   return fan;
 }
 
@@ -234,6 +310,14 @@ bool take_reflex_diagonal(const Polygon& p, const Index_triangles& triangles, In
   return true;
 }
 
+/// Adds the diagonals of a split polygon's triangles (point indices) to `taken`.
+inline void take_diagonals(const Index_triangles& triangles, Index_pairs& taken)
+{
+  for(const auto& t : triangles)
+    for(int i = 0; i < 3; ++i)
+      taken.insert(std::minmax(t[i], t[(i + 1) % 3])); // the sides are in it already
+}
+
 /// Splits every polygon of the soup into triangles, in the soup: a non-convex one by
 /// a constrained triangulation in its plane, a convex one as `split_convex()` does.
 /// Not CGAL's `triangulate_faces()`: on a non-planar polygon whose projection crosses
@@ -245,10 +329,10 @@ bool take_reflex_diagonal(const Polygon& p, const Index_triangles& triangles, In
 template <class PointRange, class PolygonRange>
 std::size_t split_polygons(const PointRange& points, PolygonRange& polygons)
 {
-  const bool has_quadrilaterals =
-      std::any_of(polygons.begin(), polygons.end(), [](const auto& polygon) { return polygon.size() == 4; });
+  const bool has_polygons =
+      std::any_of(polygons.begin(), polygons.end(), [](const auto& polygon) { return polygon.size() > 3; });
   Index_pairs taken; // edges, and diagonals chosen
-  if(has_quadrilaterals)
+  if(has_polygons)
     taken = polygon_edges(polygons);
   std::size_t split = 0;
   const std::size_t count = polygons.size();
@@ -257,9 +341,11 @@ std::size_t split_polygons(const PointRange& points, PolygonRange& polygons)
     if(polygon.size() <= 3)
       continue;
     ++split;
-    Index_triangles triangles = triangulate_non_convex(points, polygon);
+    Index_triangles triangles = triangulate_non_convex(points, polygon, taken);
     if(triangles.empty() || (polygon.size() == 4 && !take_reflex_diagonal(polygon, triangles, taken)))
       triangles = split_convex(points, polygon, taken);
+    else if(polygon.size() > 4 && !taken.empty())
+      take_diagonals(triangles, taken);
     polygon.assign(triangles[0].begin(), triangles[0].end()); // before emplace_back() may move it
     for(std::size_t t = 1; t < triangles.size(); ++t)
       polygons.emplace_back(triangles[t].begin(), triangles[t].end());

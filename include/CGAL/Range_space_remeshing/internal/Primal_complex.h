@@ -26,7 +26,8 @@
 // * a piece that still has a face of degree below 3 is dropped.
 // Parallel edges (two edges joining the same two vertices, around a part of the
 // surface thinner than a cell) are kept, as a halfedge mesh can hold them; they are
-// counted, for a face-list file cannot (it would read them back as one edge).
+// counted and listed, for a face-list file cannot (it would read them back as one
+// edge): the output splits them (Primal_output.h).
 
 #include <CGAL/Range_space_remeshing/internal/Union_find.h>
 
@@ -84,6 +85,21 @@ public:
   /// edges of the output that join the same two vertices as another one (k edges
   /// between two vertices count k - 1)
   std::size_t number_of_parallel_edges() const { return parallel_edges_; }
+  /// One halfedge of each edge that joins the same two vertices as an edge before it
+  /// (in the order of their vertices, then of their halfedges): `k - 1` of each `k`.
+  std::vector<std::uint32_t> parallel_halfedges() const
+  {
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> ends = edge_ends();
+    std::sort(ends.begin(), ends.end());
+    std::vector<std::uint32_t> parallel;
+    for(std::size_t i = 1; i < ends.size(); ++i)
+      if(ends[i].first == ends[i - 1].first)
+        parallel.push_back(ends[i].second);
+    return parallel;
+  }
+  /// The halfedge of the rotation system (4 * vertex + slot: the arc that leaves the
+  /// vertex by the slot) that halfedge h was, or `none` for a chord of a split face.
+  std::uint32_t traced_halfedge(std::uint32_t h) const { return traced_halfedge_[h]; }
 
   static constexpr std::uint32_t none = std::uint32_t(-1);
 
@@ -189,11 +205,13 @@ private:
     std::vector<std::uint32_t> new_id(twin_.size(), none);
     // merging digons removes halfedges, a split of a pinched face (rare) adds two
     halfedges_.reserve(alive_halfedges_);
+    traced_halfedge_.reserve(alive_halfedges_);
     face_halfedge_.reserve(orbit_start_.size());
     for(std::uint32_t h = 0; h < twin_.size(); ++h)
       if(alive_[h]) {
         new_id[h] = std::uint32_t(halfedges_.size());
         halfedges_.push_back(Halfedge{twin_[h] / 4, none, none, none});
+        traced_halfedge_.push_back(h);
       }
     std::vector<std::uint32_t> face_id(orbit_start_.size(), none);
     for(std::uint32_t h = 0; h < twin_.size(); ++h) {
@@ -261,6 +279,7 @@ private:
     const std::uint32_t ear = std::uint32_t(face_halfedge_.size());
     halfedges_.push_back(Halfedge{a, rest_chord, in_2, ear});
     halfedges_.push_back(Halfedge{b, ear_chord, after_b, f});
+    traced_halfedge_.insert(traced_halfedge_.end(), 2, none);
     face_halfedge_.push_back(in_2);
     halfedges_[in_2].face = ear;
     halfedges_[out_2].face = ear;
@@ -355,17 +374,25 @@ private:
                                                 [](std::uint32_t h) { return h != none; }));
   }
 
-  void count_parallel_edges()
+  /// The two vertices of each kept edge (lower first, as one key) and its halfedge
+  /// from the lower one.
+  std::vector<std::pair<std::uint64_t, std::uint32_t>> edge_ends() const
   {
-    std::vector<std::uint64_t> ends; // the two vertices of each kept edge, lower first
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> ends;
     for(std::uint32_t h = 0; h < halfedges_.size(); ++h) {
       const std::uint32_t u = source(h), v = halfedges_[h].target;
       if(u < v && kept_vertex_[v])
-        ends.push_back(std::uint64_t(u) << 32 | v);
+        ends.emplace_back(std::uint64_t(u) << 32 | v, h);
     }
+    return ends;
+  }
+
+  void count_parallel_edges()
+  {
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> ends = edge_ends();
     std::sort(ends.begin(), ends.end());
-    parallel_edges_ = std::size_t(ends.end() - ends.begin()) -
-                      std::size_t(std::unique(ends.begin(), ends.end()) - ends.begin());
+    for(std::size_t i = 1; i < ends.size(); ++i)
+      parallel_edges_ += ends[i].first == ends[i - 1].first ? 1 : 0;
   }
 
   std::uint32_t number_of_vertices_;
@@ -381,6 +408,7 @@ private:
   std::vector<bool> is_hole_; // per orbit
   // explicit halfedges
   std::vector<Halfedge> halfedges_;
+  std::vector<std::uint32_t> traced_halfedge_; // by halfedge: see traced_halfedge()
   std::vector<std::uint32_t> face_halfedge_;
   std::vector<bool> kept_vertex_;
   std::vector<std::uint32_t> last_visit_, cycle_; // scratch of split_at_pinch()

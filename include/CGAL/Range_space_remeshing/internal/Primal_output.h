@@ -174,14 +174,15 @@ void prefetch_ahead_of(std::uint32_t v, const Tracer& tracer, const VPM& vpm, co
 template <class PolygonMesh>
 void write_primal_connectivity(const Primal_complex& complex,
                                const std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& vertex_of,
-                               PolygonMesh& out, Statistics& stats)
+                               PolygonMesh& out, Statistics& stats,
+                               std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>& halfedge_of)
 {
   using out_vertex = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
   using out_halfedge = typename boost::graph_traits<PolygonMesh>::halfedge_descriptor;
   using out_face = typename boost::graph_traits<PolygonMesh>::face_descriptor;
   const std::uint32_t none = Primal_complex::none;
   const auto& halfedges = complex.halfedges();
-  std::vector<out_halfedge> halfedge_of(halfedges.size());
+  halfedge_of.assign(halfedges.size(), out_halfedge());
   std::vector<std::uint8_t> done(halfedges.size(), 0);
   std::size_t number_of_edges = 0;
   for(std::uint32_t h = 0; h < halfedges.size(); ++h) {
@@ -266,11 +267,60 @@ void put_normals(NormalMap& normal_map, CreaseNormalMap& crease_normal_map, OutV
   put(crease_normal_map, ov, Out_vector(normals.other[0], normals.other[1], normals.other[2]));
 }
 
+/// Of the two halfedges of an edge of the complex, one that leaves an inner vertex
+/// along its arc (so that a point of the arc can be found), or `none`.
+inline std::uint32_t halfedge_along_an_arc(const Primal_complex& complex, std::uint32_t h,
+                                           const std::vector<bool>& boundary)
+{
+  for(std::uint32_t g : {h, complex.halfedges()[h].twin}) {
+    const std::uint32_t traced = complex.traced_halfedge(g);
+    if(traced != Primal_complex::none && !boundary[traced / 4])
+      return g;
+  }
+  return Primal_complex::none;
+}
+
+/// Splits one edge of each pair of parallel edges of `out` (see `Primal_complex`) at a
+/// point of its arc, near the vertex it leaves (`point_along_arc()`): the new vertex
+/// lies on the surface, inside the cell of the faces beside the arc, so the faces
+/// still lie in one cell each; it has valence 2. A face-list file then tells the two
+/// edges apart. An edge with no arc to sample (a chord, a border edge) is left, and
+/// stays counted in `Statistics::parallel_edges`.
+template <class Tracer, class PolygonMesh, class Sample>
+void split_parallel_edges(const Primal_complex& complex, Tracer& tracer, PolygonMesh& out,
+                          const std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor>& halfedge_of,
+                          const Sample& sample, Statistics& stats)
+{
+  const auto& vertices = tracer.intersection_vertices();
+  std::vector<bool> boundary(vertices.size());
+  for(std::uint32_t v = 0; v < vertices.size(); ++v)
+    boundary[v] = vertices[v].is_boundary();
+  for(const std::uint32_t h : complex.parallel_halfedges()) {
+    const std::uint32_t g = halfedge_along_an_arc(complex, h, boundary);
+    if(g == Primal_complex::none)
+      continue;
+    const std::uint32_t traced = complex.traced_halfedge(g), v = traced / 4;
+    const auto point = tracer.point_along_arc(vertices[v], int(traced % 4));
+    // the new halfedge ends at the new vertex, on the side of g's source
+    const auto to_new = CGAL::Euler::split_edge(halfedge_of[g], out);
+    sample(target(to_new, out), point.face_id, point.w);
+    ++stats.split_parallel_edges;
+    --stats.parallel_edges;
+    ++stats.output_vertices;
+    ++stats.output_edges;
+  }
+}
+
+/// Whether the output keeps the complex's parallel edges (`remesh()`'s primal, which
+/// its dual undoes) or splits each at a point of its arc (`primal_remesh()`'s: then
+/// `out` can be written to a face-list file).
+enum class Parallel_edges { KEEP, SPLIT };
+
 template <class TriangleMesh, class VPM, class VertexIndexMap, class Tracer, class PolygonMesh,
           class NamedParametersIn, class NamedParametersOut>
 void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex_index, Tracer& tracer,
                           const Primal_complex& complex, PolygonMesh& out, const NamedParametersIn& np_in,
-                          const NamedParametersOut& np_out, Statistics& stats)
+                          const NamedParametersOut& np_out, Statistics& stats, Parallel_edges parallel_edges)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -314,17 +364,12 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
   if constexpr(needs_corner_normals && !has_input_normals) // each output vertex reads three corners' normals
     if(3 * 40 * vertices.size() >= num_vertices(tm))
       input_normals.compute_all();
-  std::vector<out_vertex> vertex_of(vertices.size());
-  std::size_t number_of_vertices = 0;
-  for(std::uint32_t v = 0; v < vertices.size(); ++v) {
-    prefetch_ahead_of<needs_corner_normals && has_input_normals>(v, tracer, vpm, given_normals, attributes);
-    if(!complex.is_kept(v))
-      continue;
-    const auto w = tracer.barycentric_coordinates(vertices[v]);
-    const std::array<in_vertex, 3> corners = tracer.corners_of(vertices[v]);
+  // the output vertex ov where intersection vertex v's triangle has barycentric
+  // coordinates w: position, normals, attributes interpolated there
+  auto sample = [&](out_vertex ov, std::uint32_t face_id, const std::array<double, 3>& w) {
+    const std::array<in_vertex, 3> corners = tracer.corners_of_face(face_id);
     const std::array<In_point, 3> corner_points = {{get(vpm, corners[0]), get(vpm, corners[1]), get(vpm, corners[2])}};
     const std::array<double, 3> p = barycentric_point(corner_points, w);
-    const out_vertex ov = add_vertex(out);
     put(out_vpm, ov, Out_point(p[0], p[1], p[2]));
     if constexpr(needs_corner_normals)
       put_normals<Out_vector>(normal_map, crease_normal_map, ov,
@@ -335,12 +380,24 @@ void write_primal_complex(const TriangleMesh& tm, VPM vpm, VertexIndexMap vertex
         attribute_sources[c] = {corners[c], w[c]};
       attributes.put_mixed(ov, attribute_sources);
     }
+  };
+  std::vector<out_vertex> vertex_of(vertices.size());
+  std::size_t number_of_vertices = 0;
+  for(std::uint32_t v = 0; v < vertices.size(); ++v) {
+    prefetch_ahead_of<needs_corner_normals && has_input_normals>(v, tracer, vpm, given_normals, attributes);
+    if(!complex.is_kept(v))
+      continue;
+    const out_vertex ov = add_vertex(out);
+    sample(ov, vertices[v].face_id, tracer.barycentric_coordinates(vertices[v]));
     vertex_of[v] = ov;
     ++number_of_vertices;
   }
 
   stats.output_vertices = number_of_vertices;
-  write_primal_connectivity(complex, vertex_of, out, stats);
+  std::vector<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor> halfedge_of;
+  write_primal_connectivity(complex, vertex_of, out, stats, halfedge_of);
+  if(parallel_edges == Parallel_edges::SPLIT && stats.parallel_edges > 0)
+    split_parallel_edges(complex, tracer, out, halfedge_of, sample, stats);
 }
 
 } // namespace internal

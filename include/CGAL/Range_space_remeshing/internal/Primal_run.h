@@ -295,7 +295,8 @@ template <class TriangleMesh, class PolygonMesh, class NamedParametersIn, class 
           class Inspector, class ConcurrencyTag>
 Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMesh& out,
                             const NamedParametersIn& np_in, const NamedParametersOut& np_out,
-                            const Inspector& inspect, const Progress& progress, ConcurrencyTag)
+                            const Inspector& inspect, const Progress& progress, ConcurrencyTag,
+                            Parallel_edges parallel_edges = Parallel_edges::SPLIT)
 {
   constexpr bool parallel = runs_in_parallel<ConcurrencyTag>();
   using CGAL::parameters::choose_parameter;
@@ -352,7 +353,7 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
       inspect(tracer, *complex);
 
       progress.report(Remeshing_stage::PRIMAL_OUTPUT, 0);
-      write_primal_complex(tm, vpm, vertex_index, tracer, *complex, out, np_in, np_out, stats);
+      write_primal_complex(tm, vpm, vertex_index, tracer, *complex, out, np_in, np_out, stats, parallel_edges);
       progress.report(Remeshing_stage::PRIMAL_OUTPUT, 1);
       stats.time_output_ms = milliseconds_since(start);
       stats.time_total_ms =

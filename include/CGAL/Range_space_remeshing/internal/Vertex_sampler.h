@@ -38,9 +38,11 @@ public:
   /// The input corners of the intersection vertex's triangle, in the order of
   /// `barycentric_coordinates()`: read from its record, which holds them already
   /// (where going through the mesh from the face would read four more places).
-  std::array<vertex_descriptor, 3> corners_of(const Vertex& v) const
+  std::array<vertex_descriptor, 3> corners_of(const Vertex& v) const { return corners_of_face(v.face_id); }
+  /// The same for a recorded face.
+  std::array<vertex_descriptor, 3> corners_of_face(std::uint32_t face_id) const
   {
-    const auto& corners = input_.corners_of(v.face_id); // recorded: v was created in it
+    const auto& corners = input_.corners_of(face_id);
     return {{input_.vertex_of_id(corners[0]), input_.vertex_of_id(corners[1]), input_.vertex_of_id(corners[2])}};
   }
 
