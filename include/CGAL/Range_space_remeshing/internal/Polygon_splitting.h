@@ -41,6 +41,13 @@ namespace internal {
 using Index_pairs = std::unordered_set<std::pair<std::size_t, std::size_t>, boost::hash<std::pair<std::size_t, std::size_t>>>;
 using Index_triangles = std::vector<std::array<std::size_t, 3>>;
 
+/// The largest polygon whose diagonals the split checks against the other faces' edges
+/// (the search is quadratic). A larger one is split as a fan from its first corner or
+/// by its constrained triangulation, and a soup of triangles and such polygons only
+/// does not collect its edges at all.
+constexpr std::size_t largest_checked_polygon = 32;
+
+
 /// The edges of the soup's polygons, each as its two point indices in increasing order.
 template <class PolygonRange>
 Index_pairs polygon_edges(const PolygonRange& polygons)
@@ -190,7 +197,8 @@ Index_triangles triangulate_if_non_convex(const std::vector<Point>& corners, con
      !CGAL::is_simple_2(corners.begin(), corners.end(), Projection()))
     return {};
   Index_triangles triangles = triangulate_simple_polygon<Projection>(corners);
-  if(!triangles.empty() && uses_a_taken_diagonal(triangles, polygon, taken)) {
+  if(!triangles.empty() && polygon.size() <= largest_checked_polygon &&
+     uses_a_taken_diagonal(triangles, polygon, taken)) {
     Index_triangles fan = star_fan_with_free_diagonals<Projection>(corners, polygon, taken);
     if(!fan.empty())
       triangles = std::move(fan);
@@ -246,8 +254,7 @@ bool split_along_first_diagonal(const PointRange& points, const Polygon& p, Inde
 template <class Polygon>
 std::size_t fan_corner(const Polygon& p, const Index_pairs& taken)
 {
-  constexpr std::size_t largest_searched = 32;
-  if(taken.empty() || p.size() > largest_searched)
+  if(taken.empty() || p.size() > largest_checked_polygon)
     return 0;
   for(std::size_t apex = 0; apex < p.size(); ++apex) {
     bool free = true;
@@ -274,7 +281,7 @@ Index_triangles split_convex(const PointRange& points, const Polygon& p, Index_p
   Index_triangles fan;
   for(std::size_t i = 1; i + 1 < k; ++i) {
     fan.push_back({p[apex], p[(apex + i) % k], p[(apex + i + 1) % k]});
-    if(!taken.empty() && i > 1)
+    if(!taken.empty() && i > 1 && k <= largest_checked_polygon)
       taken.insert(std::minmax(std::size_t(p[apex]), std::size_t(p[(apex + i) % k])));
   }
   return fan;
@@ -329,8 +336,9 @@ inline void take_diagonals(const Index_triangles& triangles, Index_pairs& taken)
 template <class PointRange, class PolygonRange>
 std::size_t split_polygons(const PointRange& points, PolygonRange& polygons)
 {
-  const bool has_polygons =
-      std::any_of(polygons.begin(), polygons.end(), [](const auto& polygon) { return polygon.size() > 3; });
+  const bool has_polygons = std::any_of(polygons.begin(), polygons.end(), [](const auto& polygon) {
+    return polygon.size() > 3 && polygon.size() <= largest_checked_polygon;
+  });
   Index_pairs taken; // edges, and diagonals chosen
   if(has_polygons)
     taken = polygon_edges(polygons);
@@ -344,7 +352,7 @@ std::size_t split_polygons(const PointRange& points, PolygonRange& polygons)
     Index_triangles triangles = triangulate_non_convex(points, polygon, taken);
     if(triangles.empty() || (polygon.size() == 4 && !take_reflex_diagonal(polygon, triangles, taken)))
       triangles = split_convex(points, polygon, taken);
-    else if(polygon.size() > 4 && !taken.empty())
+    else if(polygon.size() > 4 && polygon.size() <= largest_checked_polygon && !taken.empty())
       take_diagonals(triangles, taken);
     polygon.assign(triangles[0].begin(), triangles[0].end()); // before emplace_back() may move it
     for(std::size_t t = 1; t < triangles.size(); ++t)
