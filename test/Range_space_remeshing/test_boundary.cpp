@@ -6,7 +6,10 @@
 
 #include <CGAL/Range_space_remeshing/remesh.h>
 
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/IO/OFF.h>
 
 #include <algorithm>
 #include <limits>
@@ -339,8 +342,8 @@ void test_disk_crossed_once()
 }
 
 /// Two quads side by side: the border has two vertices of valence 3, so two chains
-/// only; one is cut at a valence-2 vertex, where the dual border passes through the
-/// dual vertex of its face, so that the dual border cycle has more than two edges.
+/// only; one is cut at a valence-2 vertex, whose dual face is a quad with a corner at
+/// the vertex itself, so that the dual border cycle has four edges, on the primal's.
 void test_dual_of_two_quads()
 {
   Mesh two;
@@ -352,19 +355,23 @@ void test_dual_of_two_quads()
   Mesh quads;
   const auto dual = RSR::dualize(two, quads);
   CHECK(CGAL::is_valid_polygon_mesh(quads));
-  CHECK_EQ(dual.quads, std::size_t(2));
+  CHECK_EQ(dual.quads, std::size_t(3));
   CHECK_EQ(dual.non_quads, std::size_t(0));
-  CHECK_EQ(num_vertices(quads), std::size_t(5));
+  CHECK_EQ(num_vertices(quads), std::size_t(6));
   CHECK_EQ(number_of_border_cycles(quads), std::size_t(1));
   CHECK_EQ(euler_characteristic(quads), 1L);
-  // the dual border lies on the primal's: every border vertex but the one through a
-  // face is on the primal square's border
-  std::size_t on_primal_border = 0;
+  // the dual border lies on the primal's: its four vertices (three chains', the
+  // corner) are on the primal square's border, the faces' dual vertices inside
+  std::size_t on_primal_border = 0, on_dual_border = 0;
   for(auto w : vertices(quads)) {
     const Point& p = quads.point(w);
-    on_primal_border += p.y() == 0 || p.y() == 1 || p.x() == 0 || p.x() == 2;
+    const bool on_border = p.y() == 0 || p.y() == 1 || p.x() == 0 || p.x() == 2;
+    on_primal_border += on_border;
+    on_dual_border += bool(CGAL::is_border(w, quads));
+    CHECK_EQ(on_border, bool(CGAL::is_border(w, quads)));
   }
-  CHECK_EQ(on_primal_border, std::size_t(3));
+  CHECK_EQ(on_primal_border, std::size_t(4));
+  CHECK_EQ(on_dual_border, std::size_t(4));
 }
 
 /// A hole inside one cell has no boundary vertex: the output covers it, and the
@@ -396,6 +403,63 @@ void test_uncrossed_hole()
   CHECK_EQ(number_of_border_cycles(fine), std::size_t(2));
 }
 
+/// Border vertices where two fans of faces meet: one vertex, two border gaps (what a
+/// face-list file cannot tell from a non-manifold vertex).
+std::size_t pinched_vertices(const Mesh& m)
+{
+  std::vector<Mesh::Halfedge_index> pinched;
+  CGAL::Polygon_mesh_processing::non_manifold_vertices(m, std::back_inserter(pinched));
+  return pinched.size();
+}
+
+/// A face between two border cycles of three edges (as coarse cells leave around a
+/// small hole): each cycle has two chains, so the dual cuts it at its vertex of valence
+/// 2, and both those vertices are corners of the same face. The dual border once went
+/// through that face's dual vertex at both cuts: a pinched vertex, and a file with a
+/// non-manifold vertex (elephant-with-holes.off at --cell-size 0.04 to 0.1).
+void test_face_between_two_short_holes()
+{
+  Mesh primal;
+  std::vector<Mesh::Vertex_index> grid; // 4 x 4 points, 3 x 3 squares
+  for(int j = 0; j < 4; ++j)
+    for(int i = 0; i < 4; ++i)
+      grid.push_back(primal.add_vertex(Point(i, j, 0.1 * i * j)));
+  auto at = [&](int i, int j) { return grid[4 * j + i]; };
+  for(int j = 0; j < 3; ++j)
+    for(int i = 0; i < 3; ++i)
+      if(i != 1 || j != 1)
+        CHECK(primal.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)) != Mesh::null_face());
+  // the middle square, with a corner pushed in from its lower and its upper edge: two
+  // holes of three edges, each with one vertex of valence 2, both in this face
+  const Point x(1.5, 1.2, 0.2), y(1.5, 1.8, 0.3);
+  const std::vector<Mesh::Vertex_index> middle = {at(1, 1), primal.add_vertex(x), at(2, 1),
+                                                  at(2, 2), primal.add_vertex(y), at(1, 2)};
+  CHECK(primal.add_face(middle) != Mesh::null_face());
+  CHECK(CGAL::is_valid_polygon_mesh(primal));
+  CHECK_EQ(number_of_border_cycles(primal), std::size_t(3));
+
+  Mesh quads;
+  const auto dual = RSR::dualize(primal, quads);
+  CHECK(CGAL::is_valid_polygon_mesh(quads));
+  CHECK_EQ(pinched_vertices(quads), std::size_t(0));
+  CHECK_EQ(number_of_border_cycles(quads), std::size_t(3));
+  CHECK_EQ(euler_characteristic(quads), euler_characteristic(primal));
+  CHECK_EQ(dual.dropped_pieces, std::size_t(0));
+  // the cut vertices are corners of the dual border: it stays on the primal's
+  for(const Point& cut : {x, y})
+    CHECK(std::count_if(vertices(quads).begin(), vertices(quads).end(), [&](Mesh::Vertex_index v) {
+            return quads.point(v) == cut && CGAL::is_border(v, quads);
+          }) == 1);
+  // written and read back as a soup: a polygon mesh, with as many faces
+  std::stringstream file;
+  CHECK(CGAL::IO::write_OFF(file, quads, CGAL::parameters::stream_precision(17)));
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  CHECK(CGAL::IO::read_OFF(file, points, polygons));
+  CHECK_EQ(polygons.size(), num_faces(quads));
+  CHECK(CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons));
+}
+
 void test_cgal_meshes(const std::string& directory)
 {
   for(const std::string name : {"elephant-with-holes", "mech-holes-shark"}) {
@@ -410,6 +474,13 @@ void test_cgal_meshes(const std::string& directory)
       check_primal(c, RSR::Seeding_method::COMPLETE_SCAN);
       check_dual_pipeline(c);
     }
+    // coarse cells leave small holes of three edges, several around one face
+    for(double fraction : {0.04, 0.05, 0.06, 0.07, 0.08, 0.1}) {
+      Mesh quads;
+      RSR::remesh(m, quads, params::grid_spacing(fraction * bbox_diagonal(m)));
+      CHECK(CGAL::is_valid_polygon_mesh(quads));
+      CHECK_EQ(pinched_vertices(quads), std::size_t(0));
+    }
   }
 }
 
@@ -422,6 +493,7 @@ int main(int argc, char** argv)
   test_dual_of_two_quads();
   test_relax_open_square();
   test_uncrossed_hole();
+  test_face_between_two_short_holes();
   if(argc > 1)
     test_cgal_meshes(argv[1]);
   return report("test_boundary");

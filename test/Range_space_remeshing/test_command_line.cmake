@@ -368,6 +368,24 @@ run(2 bones_coarse.stl --output primal --cell-size 0.05 ${MESH_DIR}/bones.off bo
 expect_message("cannot be split into triangles without [0-9]+ edge.*\\.off" "coarse primal to STL")
 run(0 bones_coarse.off --output primal --cell-size 0.05 ${MESH_DIR}/bones.off bones_coarse.off)
 run(0 bar_fine.off --output primal --absolute --cell-size 0.1 bar.off bar_fine.off)
+# --preserve-topology has a time limit by default: on a needle 5e-7 thick it refined
+# for 150 s and more (hostile round 11, H2); it says how far the refinement got
+run(0 bar_kept.off --stats --preserve-topology --absolute --cell-size 0.1 bar.off bar_kept.off)
+expect_json(60.0 time_limit)
+run(0 bar_kept.off --stats --preserve-topology --time-limit 100 --absolute --cell-size 0.1 bar.off bar_kept.off)
+expect_json(100.0 time_limit)
+run(0 bar_kept.off --stats --absolute --cell-size 0.1 bar.off bar_kept.off)
+expect_json(0.0 time_limit)
+run(2 needle.stl --output primal --cell-size 0.05 --preserve-topology --time-limit 2 ${DATA_DIR}/needle.off needle.stl)
+expect_message("time limit of 2 s was reached after [0-9]+ refinement\\(s\\); the finest cell size run to the end, [0-9.e+-]+, still had topology defects: nothing was written; give more time with --time-limit S" "a preserve-topology run cut short")
+# coarse cells leave holes of three edges around elephant-with-holes; where one face
+# had two, the dual border passed twice through its dual vertex: written with a
+# non-manifold vertex, exit 0 (1 to 5 of them at 0.04 to 0.1). Read back strictly.
+foreach(size 0.05 0.1)
+  run(0 holes_${size}.off --cell-size ${size} ${MESH_DIR}/elephant-with-holes.off holes_${size}.off)
+  run(0 holes_again.off --stats --strict holes_${size}.off holes_again.off)
+  expect_json(OFF input_repairs repaired)
+endforeach()
 
 # target vertex count
 run(0 t.off --stats --output primal --target-vertices 3000 ${elephant} t.off)

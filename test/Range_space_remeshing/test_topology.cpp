@@ -225,6 +225,25 @@ void test_barbell()
   CHECK(CGAL::is_valid_polygon_mesh(quads));
   CHECK_EQ(euler_characteristic(quads), 2);
   CHECK_EQ(number_of_components(quads), std::size_t(1));
+
+  // cancelled in the first refinement (a scan after the check): the cancel says how
+  // far the refinement got, so that a time limit can report it
+  CHECK(stats.primal.topology_refinements > 0);
+  bool checked = false;
+  auto cancel_when_refining = [&checked](RSR::Remeshing_stage stage, double) {
+    checked = checked || stage == RSR::Remeshing_stage::TOPOLOGY_CHECK;
+    return !(checked && stage == RSR::Remeshing_stage::SCAN);
+  };
+  try {
+    Mesh cancelled;
+    RSR::remesh(barbell, cancelled,
+                RSR::parameters::preserve_topology(true).grid_spacing(0.5).progress_visitor(cancel_when_refining));
+    CHECK(false); // not cancelled
+  } catch(const RSR::Remeshing_cancelled& cancel) {
+    CHECK_EQ(cancel.refinements(), std::size_t(1));
+    CHECK_EQ(cancel.finest_cell_size(), 0.5);
+    CHECK(std::string(cancel.what()).find("after 1 refinement") != std::string::npos);
+  }
 }
 
 void test_thin_handled_torus()

@@ -30,6 +30,7 @@
 #include "vertex_cap.h"
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/manifoldness.h>
 #include <CGAL/Range_space_remeshing/version.h>
 #include <CGAL/assertions_behaviour.h>
 #include <CGAL/version.h>
@@ -105,12 +106,18 @@ RSR::Remesh_statistics remesh_with_progress(const Mesh& input, double h, Options
   RSR::Remesh_statistics stats;
   try {
     stats = remesh(input, normals, h, options, output);
-  } catch(const RSR::Remeshing_cancelled&) {
+  } catch(const RSR::Remeshing_cancelled& cancelled) {
     progress.clear();
     if(interrupted)
       throw;
     std::ostringstream message;
-    message << "the time limit of " << progress.limit() << " s was reached: nothing was written";
+    message << "the time limit of " << progress.limit() << " s"
+            << (options.default_time_limit ? " (--preserve-topology's default)" : "") << " was reached";
+    if(cancelled.refinements() > 0)
+      message << " after " << cancelled.refinements() << " refinement(s); the finest cell size run to the end, "
+              << cancelled.finest_cell_size() * options.cell_size / h // in --cell-size's unit
+              << ", still had topology defects";
+    message << ": nothing was written; give more time with --time-limit S";
     fail(message.str());
   }
   progress.clear();
@@ -176,6 +183,14 @@ void check_remesh(const Mesh& input, const Mesh& output, const RSR::Remesh_stati
          " pair(s) of parallel edges (parts of the surface thinner than a cell), which a mesh file cannot "
          "store; use a smaller cell size" +
          (options.output_kind == "primal" ? " or the dual output (leave out --output primal)" : " or --output primal"));
+  // A vertex where two fans of faces meet (on the border twice) is valid in a halfedge
+  // mesh but reads back from a face list as a non-manifold vertex.
+  std::vector<Mesh::Halfedge_index> pinched;
+  CGAL::Polygon_mesh_processing::non_manifold_vertices(output, std::back_inserter(pinched));
+  if(!pinched.empty())
+    fail("at this cell size the " + options.output_kind + " has " + std::to_string(pinched.size()) +
+         " vertex(es) where two fans of faces meet, which a mesh file reads back as non-manifold; use a "
+         "smaller cell size");
   if(!rsr_io::format_of(options.output)->stores_polygons) {
     const std::size_t shared = edges_of_more_than_two_triangles(output);
     if(shared > 0)

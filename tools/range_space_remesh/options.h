@@ -112,7 +112,8 @@ inline const char* const usage =
     "                          defects to FILE, a mesh (.off .obj .ply .stl); not with\n"
     "                          --seeded or --no-topology-check\n"
     "  --time-limit S        stop (exit 2, nothing written) if the remesh takes more\n"
-    "                          than S seconds\n"
+    "                          than S seconds (default: none, but 60 with\n"
+    "                          --preserve-topology)\n"
     "  --quiet               no progress line (shown on a terminal for runs over 1 s)\n"
     "  --stats               print one JSON object with counts and times on stdout\n"
     "  --strict              refuse an input that needs repairs instead of repairing it;\n"
@@ -152,9 +153,13 @@ struct Options
   long target_vertices = 0;
   std::size_t max_vertices = 0; // --max-vertices; main() sets the default (vertex_cap()) once
   double time_limit = 0;        // seconds; 0: none
+  bool default_time_limit = false; // time_limit is --preserve-topology's default
   bool quiet = false;
   class Progress_line* progress = nullptr; // set by main()
 };
+
+/// --time-limit's default with --preserve-topology, in seconds.
+constexpr double preserve_topology_time_limit = 60;
 
 /// Whether `text` is a decimal number: an optional sign, digits with an optional
 /// fraction (or a fraction alone), an optional exponent; nothing else (no spaces, no
@@ -319,6 +324,11 @@ inline Options parse_arguments(int argc, char** argv)
   options.output = positional[1];
   if(options.placement.empty())
     options.placement = options.sharp_angle >= 0 ? "sharp" : "qem";
+  // each refinement of --preserve-topology can take longer than all before it
+  if(options.preserve_topology && !given.count("--time-limit")) {
+    options.time_limit = preserve_topology_time_limit;
+    options.default_time_limit = true;
+  }
   return options;
 }
 

@@ -83,6 +83,7 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
   j["placement"] = options.placement;
   j["collapse"] = options.collapse;
   j["relaxation_steps"] = options.relax;
+  j["time_limit"] = options.time_limit; // 0: none
   j["triangulated"] = repairs.triangulated_polygons > 0;
   j["input_vertices"] = num_vertices(input);
   j["input_faces"] = num_faces(input);

@@ -63,6 +63,25 @@ class Remeshing_cancelled : public Remeshing_error
 {
 public:
   Remeshing_cancelled() : Remeshing_error("the run was cancelled", Kind::CANCELLED) {}
+
+  /// cancelled while `preserve_topology` refined the cell size, in its refinement
+  /// number `refinements`; `finest_cell_size`, the finest run to the end, had defects
+  Remeshing_cancelled(std::size_t refinements, double finest_cell_size)
+    : Remeshing_error("the run was cancelled after " + std::to_string(refinements) +
+                          " refinement(s) of preserve_topology; at cell size " + std::to_string(finest_cell_size) +
+                          ", the finest run to the end, the topology was not preserved",
+                      Kind::CANCELLED),
+      refinements_(refinements), finest_cell_size_(finest_cell_size)
+  {}
+
+  /// the refinement of `preserve_topology` cancelled (0: the first run)
+  std::size_t refinements() const { return refinements_; }
+  /// the finest cell size run to the end before the cancel (0: the first run)
+  double finest_cell_size() const { return finest_cell_size_; }
+
+private:
+  std::size_t refinements_ = 0;
+  double finest_cell_size_ = 0;
 };
 
 } // namespace Range_space_remeshing

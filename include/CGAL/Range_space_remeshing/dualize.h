@@ -39,9 +39,12 @@ chain has a dual vertex half-way along it, on the primal border, and each such b
 vertex a dual face closed by a dual border edge between the dual vertices of its two
 chains: a quad for valence 3. The dual so has the primal's Euler characteristic and
 border cycles, and its border lies on the primal's: it cannot shrink away from it.
-Border vertices of valence 2 inside a chain have no dual face (but one, a triangle,
-where a border cycle would otherwise have a single chain), and a face whose vertices
-all lack one (a piece made of one face) has no dual; it counts as a dropped piece.
+Border vertices of valence 2 inside a chain have no dual face, and a face whose
+vertices all lack one (a piece made of one face) has no dual; it counts as a dropped
+piece. A border cycle with fewer than three chains (a small hole) is also cut at one
+or two of its vertices of valence 2, so that its dual border has no fewer than three
+edges: each has a dual face, a quad whose fourth corner is a dual vertex at the cut
+vertex itself, on the primal border.
 
 The dual vertex of a primal face is placed at the average of the face's vertices
 (`Dual_placement::AVERAGE`) or at the minimiser of the squared distances to their

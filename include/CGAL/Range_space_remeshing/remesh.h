@@ -204,8 +204,14 @@ Remesh_statistics remesh_keeping_topology(double h, const TriangleMesh& tm, Quad
                             Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
     remove_all_elements(quads);
     const std::size_t earlier_refinements = stats.primal.topology_refinements + 1; // and this one
-    stats = remesh_at<ConcurrencyTag>(stats.primal.cell_size * dual_refinement_factor, tm, quads, np, np_out,
-                                      improvement, progress);
+    const double finest_with_defects = stats.primal.cell_size;
+    try {
+      stats = remesh_at<ConcurrencyTag>(finest_with_defects * dual_refinement_factor, tm, quads, np, np_out,
+                                        improvement, progress);
+    } catch(const Remeshing_cancelled& cancelled) {
+      throw Remeshing_cancelled(earlier_refinements + cancelled.refinements(),
+                                cancelled.refinements() > 0 ? cancelled.finest_cell_size() : finest_with_defects);
+    }
     stats.primal.topology_refinements += earlier_refinements;
   }
   return stats;

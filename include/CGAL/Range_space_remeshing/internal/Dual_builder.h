@@ -155,8 +155,13 @@ class Dual_builder
       std::declval<const PolygonMesh&>(), std::declval<const NamedParametersIn&>()));
 
   static constexpr std::size_t no_chain = std::size_t(-1);
+  static constexpr std::size_t no_corner = std::size_t(-1);
   struct Border_chain {
     halfedge_descriptor first, last; // border halfedges (null face), in border order
+  };
+  // the halfedges closing a border vertex's dual face: the same one but at a corner
+  struct Closing {
+    dual_halfedge from_leaving_chain, to_arriving_chain;
   };
 
 public:
@@ -187,13 +192,14 @@ public:
     const auto start = std::chrono::steady_clock::now();
     read_primal_vertices();
     find_border_chains();
-    // at most: a vertex per primal face and per chain, an edge per primal edge and per
-    // chain (the closing edges), a face per primal vertex
-    reserve_if_possible(quads_, num_faces(primal_) + chains_.size(), num_edges(primal_) + chains_.size(),
-                        num_vertices(primal_));
+    // at most: a vertex per primal face, chain and corner, an edge per primal edge,
+    // chain and corner (the closing edges), a face per primal vertex
+    reserve_if_possible(quads_, num_faces(primal_) + chains_.size() + corners_.size(),
+                        num_edges(primal_) + chains_.size() + corners_.size(), num_vertices(primal_));
     place_face_vertices();
     place_chain_vertices();
-    stats_.dual_vertices = num_faces(primal_) + chains_.size();
+    place_corner_vertices();
+    stats_.dual_vertices = num_faces(primal_) + chains_.size() + corners_.size();
     add_dual_edges();
     progress_.report(Remeshing_stage::DUAL, 0.6);
     add_dual_faces();
@@ -216,6 +222,7 @@ private:
   std::size_t index(halfedge_descriptor h) const { return get(halfedge_index_, h); }
   bool has_dual_face(vertex_descriptor v) const { return bool(has_dual_face_[index(v)]); }
   bool ends_chain(vertex_descriptor v) const { return bool(ends_chains_[index(v)]); }
+  bool is_corner(vertex_descriptor v) const { return corner_of_vertex_[index(v)] != no_corner; }
 
   Vec3 primal_normal(vertex_descriptor v) const
   {
@@ -248,7 +255,9 @@ private:
   // border between two consecutive such vertices (the vertices of valence 2 inside a
   // chain, ends of merged digons and corners, have no dual face). A chain's dual
   // vertex lies on the primal border and is placed from primal border data only, so
-  // the dual border cannot shrink away from it.
+  // the dual border cannot shrink away from it. The valence-2 vertices where a short
+  // border cycle is cut (`split_short_border_cycles()`) have a dual face, a quad whose
+  // fourth corner is a dual vertex at the primal vertex itself.
   void find_border_chains()
   {
     std::vector<std::uint8_t> on_border;
@@ -258,6 +267,7 @@ private:
       has_dual_face_[i] = !on_border[i] || corners_of_dual_face_[i] >= 4;
     ends_chains_ = has_dual_face_;
     split_short_border_cycles();
+    make_cuts_corners();
     chain_of_.assign(num_halfedges(primal_), no_chain); // of border halfedges
     for(halfedge_descriptor h : halfedges(primal_)) {
       if(!is_border(h, primal_) || chain_of_[index(h)] != no_chain || !ends_chain(source(h, primal_)))
@@ -275,8 +285,7 @@ private:
 
   // Chains end at the vertices with a dual face, and also at a few valence-2 vertices,
   // where a border cycle would otherwise have fewer than three chains (a dual border
-  // cycle of one or two edges): the dual border passes there through the dual vertex
-  // of their face.
+  // cycle of one or two edges); `make_cuts_corners()` gives them a dual face.
   void split_short_border_cycles()
   {
     auto has_face = [this](vertex_descriptor v) { return has_dual_face(v); };
@@ -291,6 +300,26 @@ private:
         cycle.push_back(target(g, primal_));
       }
       split_short_border_cycle(cycle, has_face, ends_chains_, vertex_index_);
+    }
+  }
+
+  // A vertex of valence 2 where a short border cycle is cut gets a dual face: the dual
+  // vertices of its two chains, of its face, and one at the vertex, on the primal
+  // border. (Without it, the dual border would pass through the dual vertex of its
+  // face, which would be on the border twice where the face has two such cuts: a
+  // pinched vertex, two fans that a face-list file cannot tell from a non-manifold
+  // vertex.)
+  void make_cuts_corners()
+  {
+    corner_of_vertex_.assign(num_vertices(primal_), no_corner);
+    for(vertex_descriptor v : vertices(primal_)) {
+      const std::size_t i = index(v);
+      if(ends_chains_[i] && !has_dual_face_[i]) {
+        has_dual_face_[i] = 1;
+        corners_of_dual_face_[i] = 4;
+        corner_of_vertex_[i] = corners_.size();
+        corners_.push_back(v);
+      }
     }
   }
 
@@ -386,6 +415,17 @@ private:
       dual_of_chain_.push_back(add_dual_vertex_on_chain(chain));
   }
 
+  // the dual vertex of a cut vertex's corner: at it, with its tangent plane
+  void place_corner_vertices()
+  {
+    for(vertex_descriptor v : corners_) {
+      const std::size_t i = index(v);
+      planes_.assign({{point_of_[i], normal_of_[i]}});
+      attribute_sources_.assign({{v, 1.}});
+      dual_of_corner_.push_back(add_dual_vertex(point_of_[i], normal_of_[i]));
+    }
+  }
+
   // the dual vertex on the side of face(h) of the primal edge of h
   dual_vertex dual_on_side(halfedge_descriptor h) const
   {
@@ -429,7 +469,7 @@ private:
 
   // The dual faces; a border vertex's is closed by a dual edge from the dual vertex
   // of the chain leaving it to that of the chain arriving, whose opposite is on the
-  // dual border.
+  // dual border; a corner's, by two, through the dual vertex at the corner.
   void add_dual_faces()
   {
     closing_of_vertex_.resize(num_vertices(primal_)); // dual face's border side
@@ -440,7 +480,6 @@ private:
 
   void add_dual_face(vertex_descriptor v)
   {
-    const auto null_face = boost::graph_traits<QuadMesh>::null_face();
     const dual_face df = add_face(quads_);
     halfedge_descriptor first = halfedge(v, primal_);
     for(halfedge_descriptor h : CGAL::halfedges_around_target(halfedge(v, primal_), primal_))
@@ -454,16 +493,41 @@ private:
         set_next(dual(h), dual(prev(opposite(h, primal_), primal_)), quads_);
         continue;
       }
-      const dual_halfedge closing = halfedge(add_edge(quads_), quads_);
-      set_target(closing, dual_on_side(first), quads_);
-      set_target(opposite(closing, quads_), dual_on_side(opposite(h, primal_)), quads_);
-      set_face(closing, df, quads_);
-      set_face(opposite(closing, quads_), null_face, quads_);
-      set_next(dual(h), closing, quads_);
-      set_next(closing, dual(first), quads_);
-      closing_of_vertex_[index(v)] = closing;
+      closing_of_vertex_[index(v)] = close_dual_face(v, dual(h), dual(first), df);
     }
     ++stats_.dual_faces;
+  }
+
+  dual_halfedge add_border_edge(dual_vertex from, dual_vertex to, dual_face df)
+  {
+    const dual_halfedge dh = halfedge(add_edge(quads_), quads_);
+    set_target(dh, to, quads_);
+    set_target(opposite(dh, quads_), from, quads_);
+    set_face(dh, df, quads_);
+    set_face(opposite(dh, quads_), boost::graph_traits<QuadMesh>::null_face(), quads_);
+    return dh;
+  }
+
+  // Closes the dual face `df` of border vertex v from `last` (into the dual vertex of
+  // the chain leaving v) to `first` (out of that of the chain arriving).
+  Closing close_dual_face(vertex_descriptor v, dual_halfedge last, dual_halfedge first, dual_face df)
+  {
+    const dual_vertex leaving_chain = target(last, quads_), arriving_chain = source(first, quads_);
+    if(!is_corner(v)) {
+      const dual_halfedge closing = add_border_edge(leaving_chain, arriving_chain, df);
+      set_next(last, closing, quads_);
+      set_next(closing, first, quads_);
+      return {closing, closing};
+    }
+    const dual_vertex corner = dual_of_corner_[corner_of_vertex_[index(v)]];
+    const dual_halfedge to_corner = add_border_edge(leaving_chain, corner, df);
+    const dual_halfedge from_corner = add_border_edge(corner, arriving_chain, df);
+    set_next(last, to_corner, quads_);
+    set_next(to_corner, from_corner, quads_);
+    set_next(from_corner, first, quads_);
+    set_next(opposite(from_corner, quads_), opposite(to_corner, quads_), quads_);
+    set_halfedge(corner, opposite(from_corner, quads_), quads_);
+    return {to_corner, from_corner};
   }
 
   // A face whose corners have no dual face is a whole component bounded by one border
@@ -481,26 +545,15 @@ private:
   }
 
   // The dual border, in the primal border's direction: a chain's dual vertex is
-  // between the closings of its ends, or, at an end without a dual face, the dual
-  // edge of the chain to the dual vertex of the face there.
+  // between the closings of its ends (every end of a chain has a dual face).
   void link_dual_border()
   {
-    const auto null_face = boost::graph_traits<QuadMesh>::null_face();
     for(const Border_chain& chain : chains_) {
       const vertex_descriptor from = source(chain.first, primal_), to = target(chain.last, primal_);
-      const dual_halfedge arriving = has_dual_face(from) ? opposite(closing_of_vertex_[index(from)], quads_)
-                                                         : dual(opposite(chain.first, primal_));
-      const dual_halfedge leaving = has_dual_face(to) ? opposite(closing_of_vertex_[index(to)], quads_)
-                                                      : dual(chain.last);
+      const dual_halfedge arriving = opposite(closing_of_vertex_[index(from)].from_leaving_chain, quads_);
+      const dual_halfedge leaving = opposite(closing_of_vertex_[index(to)].to_arriving_chain, quads_);
       set_next(arriving, leaving, quads_);
       set_halfedge(target(arriving, quads_), arriving, quads_);
-      if(!has_dual_face(to)) { // through the dual vertex of the face at `to`
-        const dual_halfedge onwards = dual(opposite(next(chain.last, primal_), primal_));
-        set_face(leaving, null_face, quads_);
-        set_face(onwards, null_face, quads_);
-        set_next(leaving, onwards, quads_);
-        set_halfedge(target(leaving, quads_), leaving, quads_);
-      }
     }
   }
 
@@ -562,7 +615,10 @@ private:
   std::vector<std::pair<vertex_descriptor, double>> attribute_sources_; // with weights
   std::vector<dual_vertex> dual_of_face_, dual_of_chain_;
   std::vector<dual_halfedge> dual_of_halfedge_;
-  std::vector<dual_halfedge> closing_of_vertex_;
+  std::vector<Closing> closing_of_vertex_;
+  std::vector<vertex_descriptor> corners_;     // the cut vertices of short border cycles
+  std::vector<std::size_t> corner_of_vertex_;  // by primal vertex index, or no_corner
+  std::vector<dual_vertex> dual_of_corner_;
   Dual_statistics stats_;
   std::size_t faces_without_dual_ = 0;
 };

@@ -387,13 +387,7 @@ private:
     return ends;
   }
 
-  void count_parallel_edges()
-  {
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> ends = edge_ends();
-    std::sort(ends.begin(), ends.end());
-    for(std::size_t i = 1; i < ends.size(); ++i)
-      parallel_edges_ += ends[i].first == ends[i - 1].first ? 1 : 0;
-  }
+  void count_parallel_edges() { parallel_edges_ = parallel_halfedges().size(); }
 
   std::uint32_t number_of_vertices_;
   std::vector<bool> boundary_;

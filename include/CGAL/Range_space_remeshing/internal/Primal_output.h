@@ -269,12 +269,11 @@ void put_normals(NormalMap& normal_map, CreaseNormalMap& crease_normal_map, OutV
 
 /// Of the two halfedges of an edge of the complex, one that leaves an inner vertex
 /// along its arc (so that a point of the arc can be found), or `none`.
-inline std::uint32_t halfedge_along_an_arc(const Primal_complex& complex, std::uint32_t h,
-                                           const std::vector<bool>& boundary)
+inline std::uint32_t halfedge_along_an_arc(const Primal_complex& complex, std::uint32_t h)
 {
   for(std::uint32_t g : {h, complex.halfedges()[h].twin}) {
     const std::uint32_t traced = complex.traced_halfedge(g);
-    if(traced != Primal_complex::none && !boundary[traced / 4])
+    if(traced != Primal_complex::none && !complex.is_boundary(traced / 4))
       return g;
   }
   return Primal_complex::none;
@@ -292,11 +291,8 @@ void split_parallel_edges(const Primal_complex& complex, Tracer& tracer, Polygon
                           const Sample& sample, Statistics& stats)
 {
   const auto& vertices = tracer.intersection_vertices();
-  std::vector<bool> boundary(vertices.size());
-  for(std::uint32_t v = 0; v < vertices.size(); ++v)
-    boundary[v] = vertices[v].is_boundary();
   for(const std::uint32_t h : complex.parallel_halfedges()) {
-    const std::uint32_t g = halfedge_along_an_arc(complex, h, boundary);
+    const std::uint32_t g = halfedge_along_an_arc(complex, h);
     if(g == Primal_complex::none)
       continue;
     const std::uint32_t traced = complex.traced_halfedge(g), v = traced / 4;

@@ -328,6 +328,7 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
 
   double h = cell_size;
+  double finest_with_defects = 0; // with preserve_topology: the last run refined
   for(std::size_t refinements = 0;;) {
     start = std::chrono::steady_clock::now();
     try {
@@ -343,6 +344,7 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
       const std::vector<Topology_defect<face_descriptor>> defects =
           check_topology_of<face_descriptor>(tracer, *complex, options, stats, progress, start);
       if(options.preserve && !stats.topology_preserved()) {
+        finest_with_defects = h;
         check_refinement(tm, range_map, tracer, *complex, defects, stats, h, refinements, options.maximum_vertices);
         h *= topology_refinement_factor;
         ++refinements;
@@ -365,6 +367,8 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
         origin = lattice_point_below<Point_d>(tm, range_map, h);
         continue;
       }
+      if(refinements > 0 && error.kind() == Remeshing_error::Kind::CANCELLED)
+        throw Remeshing_cancelled(refinements, finest_with_defects); // what the refinement reached
       if(refinements == 0 || error.kind() == Remeshing_error::Kind::CANCELLED ||
          error.kind() == Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED)
         throw; // as it is: a Remeshing_cancelled stays one, check_refinement()'s says the refinements
