@@ -386,6 +386,14 @@ foreach(size 0.05 0.1)
   run(0 holes_again.off --stats --strict holes_${size}.off holes_again.off)
   expect_json(OFF input_repairs repaired)
 endforeach()
+# the topology report holds flagged faces that meet at input vertices in separate
+# fans (5 non-manifold vertices at 0.2, hostile round 12): each fan has its own copy
+run(0 holes_0.2.off --cell-size 0.2 --topology-report holes_report.off ${MESH_DIR}/elephant-with-holes.off holes_0.2.off)
+run(0 report_again.off --stats --strict --output primal holes_report.off report_again.off)
+expect_json(OFF input_repairs repaired)
+# a refinement the cap stops gives its cell sizes in the map's units: so it says
+run(2 x.off --preserve-topology --max-vertices 1500 --output primal --cell-size 0.1 ${MESH_DIR}/elephant-with-holes.off x.off)
+expect_message("\\(3 refinements, to cell size 0\\.0485.*cell sizes in the map's units, in which --cell-size 0\\.1 is 0\\.137" "a refinement stopped by the cap")
 
 # target vertex count
 run(0 t.off --stats --output primal --target-vertices 3000 ${elephant} t.off)

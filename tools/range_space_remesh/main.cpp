@@ -97,7 +97,23 @@ double cell_size_in_range_space(const Mesh& input, Options& options)
   return h;
 }
 
-/// Runs the remesh under the progress line; the time limit becomes a Failure.
+/// What the user can change after the library refused: appended to its message.
+const char* way_out(RSR::Remeshing_error::Kind kind)
+{
+  switch(kind) {
+  case RSR::Remeshing_error::Kind::OUTPUT_TOO_LARGE:
+    return " (use a larger --cell-size, or raise the cap with --max-vertices)";
+  case RSR::Remeshing_error::Kind::TARGET_NOT_REACHED:
+    return " (ask for another --target-vertices, or raise the cap with --max-vertices)";
+  case RSR::Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED:
+    return " (leave out --preserve-topology to accept the change, or raise the cap with --max-vertices)";
+  default:
+    return "";
+  }
+}
+
+/// Runs the remesh under the progress line; the time limit becomes a Failure, and so
+/// does a refinement that cannot finish, with the unit of its cell sizes.
 RSR::Remesh_statistics remesh_with_progress(const Mesh& input, double h, Options& options, Mesh& output)
 {
   const Input_normals normals(input, options.map->uses_normals && !options.seeded);
@@ -117,7 +133,17 @@ RSR::Remesh_statistics remesh_with_progress(const Mesh& input, double h, Options
       message << " after " << cancelled.refinements() << " refinement(s); the finest cell size run to the end, "
               << cancelled.finest_cell_size() * options.cell_size / h // in --cell-size's unit
               << ", still had topology defects";
+    else if(options.preserve_topology)
+      message << " before the run at the cell size asked ended";
     message << ": nothing was written; give more time with --time-limit S";
+    fail(message.str());
+  } catch(const RSR::Remeshing_error& error) {
+    if(error.kind() != RSR::Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED || options.cell_size == h)
+      throw;
+    progress.clear();
+    std::ostringstream message; // the library's cell sizes are in the map's units
+    message << error.what() << way_out(error.kind()) << "; cell sizes in the map's units, in which --cell-size "
+            << options.cell_size << " is " << h;
     fail(message.str());
   }
   progress.clear();
@@ -197,21 +223,6 @@ void check_remesh(const Mesh& input, const Mesh& output, const RSR::Remesh_stati
       fail("the remesh's faces cannot be split into triangles without " + std::to_string(shared) +
            " edge(s) of more than two triangles (faces that share corners beside a part thinner than a cell); "
            "write a format that stores polygons (.off, .obj, .ply) or use a smaller cell size");
-  }
-}
-
-/// What the user can change after the library refused: appended to its message.
-const char* way_out(RSR::Remeshing_error::Kind kind)
-{
-  switch(kind) {
-  case RSR::Remeshing_error::Kind::OUTPUT_TOO_LARGE:
-    return " (use a larger --cell-size, or raise the cap with --max-vertices)";
-  case RSR::Remeshing_error::Kind::TARGET_NOT_REACHED:
-    return " (ask for another --target-vertices, or raise the cap with --max-vertices)";
-  case RSR::Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED:
-    return " (leave out --preserve-topology to accept the change, or raise the cap with --max-vertices)";
-  default:
-    return "";
   }
 }
 

@@ -10,6 +10,8 @@
 #include "mesh_types.h"
 #include "options.h"
 
+#include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 
 #include <iostream>
@@ -20,25 +22,30 @@
 namespace rsr_program {
 
 
-/// The input faces where the topology check found defects, as a mesh.
+/// The input faces where the topology check found defects, as a mesh. Some of the
+/// faces around an input vertex can be flagged in separate fans: CGAL's
+/// `orient_polygon_soup()` gives each fan its own copy of the vertex, so that the
+/// report is a manifold mesh file, with every flagged face.
 inline Mesh flagged_faces(const Mesh& input, const std::vector<RSR::Topology_defect<Mesh::Face_index>>& defects)
 {
   std::set<Mesh::Face_index> flagged;
   for(const auto& defect : defects)
     flagged.insert(defect.input_faces.begin(), defect.input_faces.end());
-  Mesh report;
-  std::map<Mesh::Vertex_index, Mesh::Vertex_index> copy;
+  std::vector<Mesh::Point> points;
+  std::vector<std::vector<std::size_t>> polygons;
+  std::map<Mesh::Vertex_index, std::size_t> index_of;
   for(Mesh::Face_index f : flagged) {
-    std::vector<Mesh::Vertex_index> corners;
+    polygons.emplace_back();
     for(Mesh::Vertex_index v : CGAL::vertices_around_face(halfedge(f, input), input)) {
-      auto found = copy.find(v);
-      if(found == copy.end())
-        found = copy.emplace(v, report.add_vertex(input.point(v))).first;
-      corners.push_back(found->second);
+      const auto inserted = index_of.emplace(v, points.size());
+      if(inserted.second)
+        points.push_back(input.point(v));
+      polygons.back().push_back(inserted.first->second);
     }
-    if(report.add_face(corners) == Mesh::null_face()) // a face against the orientation of the others:
-      report.add_face(std::vector<Mesh::Vertex_index>(corners.rbegin(), corners.rend())); // keep it anyway
   }
+  CGAL::Polygon_mesh_processing::orient_polygon_soup(points, polygons);
+  Mesh report;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, report);
   return report;
 }
 
