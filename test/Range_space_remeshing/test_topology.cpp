@@ -244,6 +244,18 @@ void test_barbell()
     CHECK_EQ(cancel.finest_cell_size(), 0.5);
     CHECK(std::string(cancel.what()).find("after 1 refinement") != std::string::npos);
   }
+  // cancelled in the dual of a refined primal: the same report
+  auto cancel_in_dual = [](RSR::Remeshing_stage stage, double) { return stage != RSR::Remeshing_stage::DUAL; };
+  try {
+    Mesh cancelled;
+    RSR::remesh(barbell, cancelled,
+                RSR::parameters::preserve_topology(true).grid_spacing(0.5).progress_visitor(cancel_in_dual));
+    CHECK(false); // not cancelled
+  } catch(const RSR::Remeshing_cancelled& cancel) {
+    CHECK_EQ(cancel.refinements(), stats.primal.topology_refinements);
+    CHECK(std::abs(cancel.finest_cell_size() - stats.primal.cell_size / RSR::internal::topology_refinement_factor) <
+          1e-12);
+  }
 }
 
 void test_thin_handled_torus()

@@ -6,6 +6,8 @@
 #ifndef CGAL_RANGE_SPACE_REMESHING_REMESHING_ERROR_H
 #define CGAL_RANGE_SPACE_REMESHING_REMESHING_ERROR_H
 
+#include <iomanip>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 
@@ -67,10 +69,7 @@ public:
   /// cancelled while `preserve_topology` refined the cell size, in its refinement
   /// number `refinements`; `finest_cell_size`, the finest run to the end, had defects
   Remeshing_cancelled(std::size_t refinements, double finest_cell_size)
-    : Remeshing_error("the run was cancelled after " + std::to_string(refinements) +
-                          " refinement(s) of preserve_topology; at cell size " + std::to_string(finest_cell_size) +
-                          ", the finest run to the end, the topology was not preserved",
-                      Kind::CANCELLED),
+    : Remeshing_error(message_after(refinements, finest_cell_size), Kind::CANCELLED),
       refinements_(refinements), finest_cell_size_(finest_cell_size)
   {}
 
@@ -80,6 +79,15 @@ public:
   double finest_cell_size() const { return finest_cell_size_; }
 
 private:
+  static std::string message_after(std::size_t refinements, double finest_cell_size)
+  {
+    std::ostringstream message; // cell sizes in map units can be far below 1e-6
+    message << std::setprecision(3) << "the run was cancelled after " << refinements
+            << " refinement(s) of preserve_topology; at cell size " << finest_cell_size
+            << ", the finest run to the end, the topology was not preserved";
+    return message.str();
+  }
+
   std::size_t refinements_ = 0;
   double finest_cell_size_ = 0;
 };

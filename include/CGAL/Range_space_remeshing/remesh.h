@@ -163,19 +163,27 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
   // result, which the statistics explain, rather than an error of a later stage.
   if(!remesh_primal(primal_out))
     return finish();
-  stats.dual = build_dual(primal, quads, dual_in, dual_out, progress);
-  if(stats.dual.quads + stats.dual.non_quads == 0)
-    return finish();
+  try {
+    stats.dual = build_dual(primal, quads, dual_in, dual_out, progress);
+    if(stats.dual.quads + stats.dual.non_quads == 0)
+      return finish();
 
-  stats.all_quads = complete_quads(quads, stage_parameters);
-  if(improvement.collapse)
-    stats.collapse = collapse_quads(quads, stage_parameters.do_flip(improvement.rotate_edges)
-                                               .number_of_collapse_passes(improvement.collapse_passes));
-  if(improvement.relaxation_steps > 0)
-    stats.time_relaxation_ms =
-        relax_on_tangent_planes(quads, stage_parameters.number_of_relaxation_steps(improvement.relaxation_steps));
-  if(improvement.untangle_near_target == 0 || is_near_target(num_vertices(quads), improvement.untangle_near_target))
-    stats.untangle = untangle_faces(quads, stage_parameters);
+    stats.all_quads = complete_quads(quads, stage_parameters);
+    if(improvement.collapse)
+      stats.collapse = collapse_quads(quads, stage_parameters.do_flip(improvement.rotate_edges)
+                                                 .number_of_collapse_passes(improvement.collapse_passes));
+    if(improvement.relaxation_steps > 0)
+      stats.time_relaxation_ms =
+          relax_on_tangent_planes(quads, stage_parameters.number_of_relaxation_steps(improvement.relaxation_steps));
+    if(improvement.untangle_near_target == 0 || is_near_target(num_vertices(quads), improvement.untangle_near_target))
+      stats.untangle = untangle_faces(quads, stage_parameters);
+  } catch(const Remeshing_cancelled&) {
+    // cancelled after a refined primal: the last size refined from had defects
+    if(stats.primal.topology_refinements == 0)
+      throw;
+    throw Remeshing_cancelled(stats.primal.topology_refinements,
+                              stats.primal.cell_size / topology_refinement_factor);
+  }
   return finish();
 }
 
