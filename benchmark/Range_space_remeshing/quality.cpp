@@ -86,6 +86,7 @@ auto program_parameters(const Model& model, std::size_t target)
       .seeding_method(RSR::Seeding_method::COMPLETE_SCAN)
       .check_topology(true)
       .preserve_topology(false)
+      .refine_around_defects(true)
       .quad_collapse(true)
       .dual_placement(RSR::Dual_placement::QEM)
       .number_of_relaxation_steps(3);

@@ -154,10 +154,13 @@ if(NOT plain_collapsed EQUAL 0 OR NOT collapsed GREATER 0 OR NOT collapse_non_qu
   math(EXPR failures "${failures} + 1")
 endif()
 
-# topology: a coarse cell size is flagged (a warning on stderr, the faces in the
-# report), --preserve-topology refines the cell size until the check passes (0.08:
-# the primal at 0.1 has parallel edges, refused)
-run(0 t.off --stats --output primal --cell-size 0.08 --topology-report flagged.off ${elephant} t.off)
+# topology: with --allow-topology-change a coarse cell size is flagged (a warning on
+# stderr, the faces in the report); by default the cells around the defects are
+# refined until the check passes, at the cell size asked; --preserve-topology
+# refines the whole cell size where that is not enough (0.08: the primal at 0.1 has
+# parallel edges, refused)
+run(0 t.off --stats --output primal --cell-size 0.08 --allow-topology-change --topology-report flagged.off
+    ${elephant} t.off)
 string(JSON coarse_preserved GET "${out}" topology preserved)
 string(JSON coarse_non_disk GET "${out}" topology non_disk_cells)
 if(coarse_preserved OR NOT coarse_non_disk GREATER 0 OR NOT err MATCHES "warning: the remesh may not have"
@@ -165,13 +168,35 @@ if(coarse_preserved OR NOT coarse_non_disk GREATER 0 OR NOT err MATCHES "warning
   message(SEND_ERROR "coarse elephant not flagged: ${out}\n${err}")
   math(EXPR failures "${failures} + 1")
 endif()
+run(0 k.off --stats --output primal --cell-size 0.08 ${elephant} k.off)
+string(JSON local_preserved GET "${out}" topology preserved)
+string(JSON local_chi GET "${out}" topology primal_euler_characteristic)
+string(JSON local_rounds GET "${out}" topology local_refinements)
+string(JSON local_regions GET "${out}" topology magnified_regions)
+string(JSON local_asked GET "${out}" cell_size)
+string(JSON local_used GET "${out}" cell_size_used)
+string(JSON local_vertices GET "${out}" output_vertices)
+set(local_err "${err}")
+run(0 k_again.off --stats --strict --output primal --allow-topology-change k.off k_again.off) # read back
+string(JSON local_read_vertices GET "${out}" input_vertices)
+set(err "${local_err}")
+if(NOT local_preserved OR NOT local_chi EQUAL -4 OR NOT local_rounds GREATER 0 OR NOT local_regions GREATER 0
+   OR NOT local_used EQUAL local_asked OR NOT local_read_vertices EQUAL local_vertices OR err MATCHES "warning")
+  message(SEND_ERROR "coarse elephant not refined around its defects: ${out}\n${err}")
+  math(EXPR failures "${failures} + 1")
+endif()
+run(2 NONE --preserve-topology --allow-topology-change ${elephant} x.off)
+expect_message("--preserve-topology and --allow-topology-change exclude each other" "both topology options")
 run(0 u.off --stats --output primal --cell-size 0.1 --preserve-topology ${elephant} u.off)
 string(JSON kept_preserved GET "${out}" topology preserved)
 string(JSON kept_chi GET "${out}" topology primal_euler_characteristic)
 string(JSON input_chi GET "${out}" topology input_euler_characteristic)
 string(JSON asked GET "${out}" cell_size)
 string(JSON used GET "${out}" cell_size_used)
-if(NOT kept_preserved OR NOT kept_chi EQUAL input_chi OR NOT used LESS asked OR err MATCHES "warning")
+string(JSON kept_rounds GET "${out}" topology local_refinements)
+# kept by the refinement around the defects, at the cell size asked
+if(NOT kept_preserved OR NOT kept_chi EQUAL input_chi OR NOT used EQUAL asked OR NOT kept_rounds GREATER 0
+   OR err MATCHES "warning")
   message(SEND_ERROR "--preserve-topology: ${out}\n${err}")
   math(EXPR failures "${failures} + 1")
 endif()

@@ -127,7 +127,9 @@ Checked_run run_checked_with(const Mesh& input, const NamedParameters& base, boo
 {
   Checked_run run;
   auto collect = [&](const Defect& d) { run.defects.push_back(d); };
-  const auto np = base.check_topology(true).preserve_topology(preserve).topology_visitor(collect);
+  // preserve: the global refinement alone (test_refined_around_defects has the local one)
+  const auto np =
+      base.check_topology(true).preserve_topology(preserve).refine_around_defects(false).topology_visitor(collect);
   run.stats = remesh_and_check(input, run.output, np);
   CHECK(run.stats.topology_checked);
   CHECK_EQ(run.stats.output_euler_characteristic, euler_characteristic(run.output));
@@ -208,6 +210,68 @@ void test_parallel_scan_agrees(const Mesh& mesh, double cell_size)
 #endif
 }
 
+/// Largest side of the bounding box of each face of `mesh`: the least and the most.
+std::pair<double, double> face_extents(const Mesh& mesh)
+{
+  double least = std::numeric_limits<double>::infinity(), most = 0;
+  for(auto f : faces(mesh)) {
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::face_bbox(f, mesh);
+    const double extent = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+    least = (std::min)(least, extent);
+    most = (std::max)(most, extent);
+  }
+  return {least, most};
+}
+
+/// refine_around_defects: the map is magnified around the barbell's neck, at the cell
+/// size asked, until the check passes; the output has the input's topology, cells
+/// smaller than asked only near the neck, and fewer vertices than the global
+/// refinement gives.
+void test_refined_around_defects(const Mesh& barbell, double h)
+{
+  std::vector<Defect> defects;
+  Mesh local_output;
+  const RSR::Statistics local = remesh_and_check(
+      barbell, local_output,
+      RSR::parameters::grid_spacing(h).check_topology(true).refine_around_defects(true).topology_visitor(
+          [&](const Defect& d) { defects.push_back(d); }));
+  print("barbell, refined around defects", h, local);
+  CHECK(local.topology_preserved());
+  CHECK(defects.empty());
+  CHECK(local.local_refinements > 0);
+  CHECK(local.magnified_regions > 0);
+  CHECK_EQ(local.topology_refinements, std::size_t(0));
+  CHECK_EQ(local.cell_size, h);
+  CHECK_EQ(euler_characteristic(local_output), euler_characteristic(barbell));
+  CHECK_EQ(number_of_components(local_output), std::size_t(1));
+  // faces of a cell about the spheres, smaller ones at the neck; none larger than the
+  // ring of a lens allows
+  const auto [least, most] = face_extents(local_output);
+  CHECK(least < h / 2);
+  CHECK(most <= h * std::pow(1 / RSR::internal::ring_stretch, double(local.local_refinements)));
+
+  const Checked_run global = run_checked(barbell, h, /*preserve*/ true);
+  CHECK(global.stats.topology_preserved());
+  CHECK(local.output_vertices < global.stats.output_vertices);
+
+  // preserve_topology tries the local refinement first
+  Mesh preserved;
+  const RSR::Statistics first_local =
+      remesh_and_check(barbell, preserved, RSR::parameters::grid_spacing(h).preserve_topology(true));
+  CHECK(first_local.topology_preserved());
+  CHECK_EQ(first_local.topology_refinements, std::size_t(0));
+  CHECK_EQ(first_local.output_vertices, local.output_vertices);
+
+  // and so does remesh(): quads with the barbell's topology, at the cell size asked
+  Mesh quads;
+  const RSR::Remesh_statistics whole = RSR::remesh(
+      barbell, quads, RSR::parameters::grid_spacing(h).check_topology(true).refine_around_defects(true));
+  CHECK(whole.topology_preserved());
+  CHECK_EQ(whole.primal.cell_size, h);
+  CHECK_EQ(euler_characteristic(quads), 2);
+  CHECK_EQ(number_of_components(quads), std::size_t(1));
+}
+
 void test_barbell()
 {
   Mesh barbell = make_barbell(1.6, 0.08);
@@ -216,11 +280,12 @@ void test_barbell()
   CHECK_EQ(euler_characteristic(barbell), 2);
   test_flagged_then_preserved("barbell", barbell, 0.5, 0.03);
   test_parallel_scan_agrees(barbell, 0.5);
+  test_refined_around_defects(barbell, 0.5);
 
   // the whole pipeline passes preserve_topology on: the quads have it too
   Mesh quads;
   const RSR::Remesh_statistics stats =
-      RSR::remesh(barbell, quads, RSR::parameters::preserve_topology(true).grid_spacing(0.5));
+      RSR::remesh(barbell, quads, RSR::parameters::preserve_topology(true).refine_around_defects(false).grid_spacing(0.5));
   CHECK(stats.primal.topology_preserved());
   CHECK(CGAL::is_valid_polygon_mesh(quads));
   CHECK_EQ(euler_characteristic(quads), 2);
@@ -237,7 +302,8 @@ void test_barbell()
   try {
     Mesh cancelled;
     RSR::remesh(barbell, cancelled,
-                RSR::parameters::preserve_topology(true).grid_spacing(0.5).progress_visitor(cancel_when_refining));
+                RSR::parameters::preserve_topology(true).refine_around_defects(false).grid_spacing(0.5).progress_visitor(
+                    cancel_when_refining));
     CHECK(false); // not cancelled
   } catch(const RSR::Remeshing_cancelled& cancel) {
     CHECK_EQ(cancel.refinements(), std::size_t(1));
@@ -249,7 +315,8 @@ void test_barbell()
   try {
     Mesh cancelled;
     RSR::remesh(barbell, cancelled,
-                RSR::parameters::preserve_topology(true).grid_spacing(0.5).progress_visitor(cancel_in_dual));
+                RSR::parameters::preserve_topology(true).refine_around_defects(false).grid_spacing(0.5).progress_visitor(
+                    cancel_in_dual));
     CHECK(false); // not cancelled
   } catch(const RSR::Remeshing_cancelled& cancel) {
     CHECK_EQ(cancel.refinements(), stats.primal.topology_refinements);
@@ -469,7 +536,7 @@ void test_refinements_counted(const std::string& mesh_dir)
     return;
   const double h = 0.0686;
   const RSR::Remesh_statistics stats =
-      RSR::remesh(elephant, quads, RSR::parameters::grid_spacing(h).preserve_topology(true));
+      RSR::remesh(elephant, quads, RSR::parameters::grid_spacing(h).preserve_topology(true).refine_around_defects(false));
   const double reductions = std::log(h / stats.primal.cell_size) / std::log(std::sqrt(2.));
   CHECK(stats.primal.topology_preserved());
   CHECK(reductions > 0.5);
@@ -478,7 +545,8 @@ void test_refinements_counted(const std::string& mesh_dir)
   // a count too low for the topology to be kept: the message says why
   bool refused = false;
   try {
-    RSR::remesh(elephant, quads, RSR::parameters::number_of_target_vertices(1000).preserve_topology(true));
+    RSR::remesh(elephant, quads,
+                RSR::parameters::number_of_target_vertices(1000).preserve_topology(true).refine_around_defects(false));
   } catch(const RSR::Remeshing_error& e) {
     refused = e.kind() == RSR::Remeshing_error::Kind::TARGET_NOT_REACHED &&
               std::string(e.what()).find("preserve_topology") != std::string::npos;
@@ -486,6 +554,15 @@ void test_refinements_counted(const std::string& mesh_dir)
       std::cerr << "unexpected refusal: " << e.what() << std::endl;
   }
   CHECK(refused);
+
+  // the same count with the refinement around defects: kept, within 10%
+  const RSR::Remesh_statistics kept =
+      RSR::remesh(elephant, quads, RSR::parameters::number_of_target_vertices(1000).preserve_topology(true));
+  CHECK(kept.topology_preserved());
+  CHECK(kept.primal.local_refinements > 0);
+  CHECK(std::abs(double(num_vertices(quads)) - 1000.) <= 100.);
+  CHECK_EQ(euler_characteristic(quads), euler_characteristic(elephant));
+  CHECK_EQ(number_of_components(quads), std::size_t(1));
 }
 
 void test_refined_elephant(const std::string& mesh_dir)

@@ -100,13 +100,18 @@ inline const char* const usage =
     "  --relax K             K relaxation iterations of the dual (default 3, 0: none)\n"
     "  --seeded              seeded traversal from one face per component: maps only\n"
     "                        the triangles the arcs cross (sublinear), may miss pieces\n"
-    "  --preserve-topology   reduce the cell size until the output has the input's\n"
-    "                          topology (closed loops, non-disk cells, lost pieces:\n"
-    "                          see the manual) and, for the dual, no parallel edges\n"
-    "                          (nor faces joined to undo them);\n"
+    "  --preserve-topology   make sure the output has the input's topology (closed\n"
+    "                          loops, non-disk cells, lost pieces: see the manual)\n"
+    "                          and, for the dual, no parallel edges (nor faces joined\n"
+    "                          to undo them): where refining the cells around the\n"
+    "                          defects (the default) does not, reduce the cell size;\n"
     "                          the cell size used is in --stats\n"
+    "  --allow-topology-change  do not refine the cells around topology defects\n"
+    "                          (they are refined by default, up to twice the\n"
+    "                          output's vertices); the check still warns\n"
     "  --no-topology-check   skip the topology check (on by default but with\n"
-    "                          --seeded, which cannot check it); a warning is printed\n"
+    "                          --seeded, which cannot check it), and so the\n"
+    "                          refinement around defects; a warning is printed\n"
     "                          on stderr when the check finds a defect\n"
     "  --topology-report FILE  write the input faces where the topology check found\n"
     "                          defects to FILE, a mesh (.off .obj .ply .stl); not with\n"
@@ -148,6 +153,7 @@ struct Options
   bool absolute = false, seeded = false, stats = false, collapse = true;
   bool strict = false, binary = true;
   bool check_topology = true, preserve_topology = false;
+  bool allow_topology_change = false; // no magnification around the defects
   std::string topology_report; // file of the flagged input faces
   std::vector<RSR::Topology_defect<Mesh::Face_index>>* defects = nullptr; // filled by the check
   long target_vertices = 0;
@@ -213,6 +219,8 @@ inline void refuse_ignored_options(const Options& options, const std::set<std::s
     fail("--normal-weight is for the maps with normals (position-normal...); the map " + map + " has none");
   if(given.count("--color-weight") && !options.map->uses_colors)
     fail("--color-weight is for the maps with colours (position-normal-color...); the map " + map + " has none");
+  if(given.count("--preserve-topology") && given.count("--allow-topology-change"))
+    fail("--preserve-topology and --allow-topology-change exclude each other");
   if(given.count("--cell-size") && given.count("--target-vertices"))
     fail("--cell-size and --target-vertices exclude each other: --target-vertices chooses the cell size");
   if(!options.topology_report.empty() && (options.seeded || !options.check_topology))
@@ -292,6 +300,8 @@ inline Options parse_arguments(int argc, char** argv)
       options.seeded = true;
     } else if(arg == "--preserve-topology") {
       options.preserve_topology = true;
+    } else if(arg == "--allow-topology-change") {
+      options.allow_topology_change = true;
     } else if(arg == "--no-topology-check") {
       options.check_topology = false;
     } else if(arg == "--topology-report") {

@@ -145,6 +145,7 @@ inline auto shared_parameters(double h, const Options& options)
       .maximum_number(options.max_vertices)
       .check_topology(options.check_topology && !options.seeded)
       .preserve_topology(options.preserve_topology)
+      .refine_around_defects(!options.allow_topology_change)
       .topology_visitor(Defect_collector{options.defects})
       .progress_visitor([progress](RSR::Remeshing_stage stage, double fraction) {
         return (*progress)(stage, fraction);

@@ -157,7 +157,10 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                    {"lost_components", s.lost_components},
                    {"input_euler_characteristic", s.input_euler_characteristic},
                    {"primal_euler_characteristic", s.output_euler_characteristic},
-                   {"refinements", s.topology_refinements}};
+                   {"refinements", s.topology_refinements},
+                   {"local_refinements", s.local_refinements},
+                   {"magnified_regions", s.magnified_regions},
+                   {"largest_magnification", s.largest_magnification}};
   json histogram = json::object();
   for(const auto& [valence, count] : valences)
     histogram[std::to_string(valence)] = count;

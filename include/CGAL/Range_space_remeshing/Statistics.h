@@ -96,6 +96,13 @@ struct Statistics
   /// times `preserve_topology` reduced the cell size before the check passed (in
   /// `remesh()`, those for the dual too)
   std::size_t topology_refinements = 0;
+  /// rounds of `refine_around_defects` before the run reported: each magnified the
+  /// map around the defects the last run left (0: f itself)
+  std::size_t local_refinements = 0;
+  /// regions of the range space where the reported run magnified f
+  std::size_t magnified_regions = 0;
+  /// the largest magnification of f in them (1 without)
+  double largest_magnification = 1;
   /// time of the check (of the last run, with `preserve_topology`)
   double time_topology_ms = 0;
   /// whether the check ran and found nothing: then every region of the surface in a

@@ -75,6 +75,7 @@ enum number_of_collapse_passes_t { number_of_collapse_passes };
 enum number_of_target_vertices_t { number_of_target_vertices };
 enum check_topology_t { check_topology };
 enum preserve_topology_t { preserve_topology };
+enum refine_around_defects_t { refine_around_defects };
 enum topology_visitor_t { topology_visitor };
 enum progress_visitor_t { progress_visitor };
 } // namespace internal_np
@@ -95,6 +96,7 @@ enum progress_visitor_t { progress_visitor };
   P(internal_np, number_of_target_vertices_t, number_of_target_vertices)                 \
   P(internal_np, check_topology_t, check_topology)                                       \
   P(internal_np, preserve_topology_t, preserve_topology)                                 \
+  P(internal_np, refine_around_defects_t, refine_around_defects)                         \
   P(internal_np, topology_visitor_t, topology_visitor)                                   \
   P(internal_np, progress_visitor_t, progress_visitor)                                   \
   P(CGAL::internal_np, grid_spacing_t, grid_spacing)                                     \

@@ -152,9 +152,29 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
       \cgalParamDefault{`false`}
       \cgalParamExtra{costs a few percent of the run where the cell size resolves the surface}
     \cgalParamNEnd
+    \cgalParamNBegin{refine_around_defects}
+      \cgalParamDescription{whether to refine the cells where the check finds defects, at the
+                            cell size asked: the run repeats with f magnified twice around each
+                            defect (a lens of the range space holding its cell, on the surface
+                            around it), at most 6 times, until the check finds none; the lenses
+                            of one round each add to those of the rounds before.
+                            `Statistics::local_refinements` and `Statistics::magnified_regions`
+                            say what it did}
+      \cgalParamType{bool}
+      \cgalParamDefault{the value of `preserve_topology`}
+      \cgalParamExtra{only with `check_topology`. Each face still lies in one cell of the magnified
+                      map, so it spans at most a cell in f where no lens reaches, a cell divided
+                      by the magnification in a lens, and up to \f$(4/3)^k\f$ cells radially in
+                      the ring where a lens ends (k the rounds). A round whose output has more than
+                      twice the intersection vertices of the run without lenses is undone,
+                      and the refinement stops there: defects that many call for a smaller cell
+                      size (`preserve_topology`).}
+    \cgalParamNEnd
     \cgalParamNBegin{preserve_topology}
-      \cgalParamDescription{whether to reduce the cell size (by factors of \f$1/\sqrt{2}\f$)
-                            until the check finds no defect; the size used is
+      \cgalParamDescription{whether to make sure the output has the topology of `tm`: first by
+                            `refine_around_defects` (unless it is set to `false`), and where defects
+                            remain, by reducing the whole cell size (by factors of \f$1/\sqrt{2}\f$,
+                            without lenses) until the check finds none; the size used is
                             `Statistics::cell_size`}
       \cgalParamType{bool}
       \cgalParamDefault{`false`}

@@ -127,7 +127,7 @@ void refuse_range_map()
 // What a run reads of `np_in` besides the maps, checked.
 struct Primal_run_options
 {
-  bool seeded, preserve, check;
+  bool seeded, preserve, check, refine_locally;
   std::size_t maximum_vertices;
 };
 
@@ -141,6 +141,8 @@ Primal_run_options primal_run_options(const NamedParametersIn& np_in)
                                     Seeding_method::COMPLETE_SCAN) == Seeding_method::SEEDED;
   options.preserve = choose_parameter(get_parameter(np_in, internal_np::preserve_topology), false);
   options.check = options.preserve || choose_parameter(get_parameter(np_in, internal_np::check_topology), false);
+  options.refine_locally =
+      options.check && choose_parameter(get_parameter(np_in, internal_np::refine_around_defects), options.preserve);
   options.maximum_vertices = maximum_vertices_of(np_in);
   if(options.preserve && options.seeded)
     throw Remeshing_error("preserve_topology needs the complete scan (Seeding_method::COMPLETE_SCAN)",
@@ -168,7 +170,8 @@ constexpr bool check_primal_remesh_parameters()
   return check_named_parameters<Function, NamedParameters, np::range_map_t, cgal_np::grid_spacing_t,
                                 np::number_of_target_vertices_t, np::grid_origin_t, cgal_np::seeding_method_t,
                                 np::seed_faces_t, cgal_np::maximum_number_t, np::check_topology_t,
-                                np::preserve_topology_t, np::topology_visitor_t, np::progress_visitor_t,
+                                np::preserve_topology_t, np::refine_around_defects_t, np::topology_visitor_t,
+                                np::progress_visitor_t,
                                 cgal_np::vertex_normal_map_t, cgal_np::vertex_color_map_t, cgal_np::vertex_texture_map_t,
                                 np::vertex_attribute_maps_t, cgal_np::vertex_point_t,
                                 cgal_np::geom_traits_t, cgal_np::vertex_index_t, cgal_np::face_index_t, More...>();

@@ -18,6 +18,7 @@
 #include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Cell_size.h>
 #include <CGAL/Range_space_remeshing/internal/Grid_tracer.h>
+#include <CGAL/Range_space_remeshing/internal/Local_magnification.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_complex.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_output.h>
 #include <CGAL/Range_space_remeshing/internal/Primal_parameters.h>
@@ -32,6 +33,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <iomanip>
@@ -231,6 +233,17 @@ double smallest_lost_part(const TriangleMesh& tm, const RangeMap& range_map, Tra
   return smallest;
 }
 
+/// Whether the lost parts of a run can be kept by the local refinement: a part of
+/// extent e in f needs cells of about e / 2, and the lenses reach h / 2^rounds at most.
+template <class TriangleMesh, class RangeMap, class Tracer, class FaceDescriptor>
+bool may_be_kept_locally(const TriangleMesh& tm, const RangeMap& range_map, Tracer& tracer,
+                         const Primal_complex& complex, const std::vector<Topology_defect<FaceDescriptor>>& defects,
+                         double h)
+{
+  const double needed = smallest_lost_part(tm, range_map, tracer, complex, defects) / 2;
+  return !(needed * std::pow(2., maximum_local_refinements) < h);
+}
+
 /// With preserve_topology, before the run at a finer cell size than h: refuses at once
 /// a refinement that cannot end below the output cap, rather than after the runs that
 /// reach it (each about twice the last). A lost component of extent e in f is kept
@@ -257,6 +270,29 @@ void check_refinement(const TriangleMesh& tm, const RangeMap& range_map, Tracer&
             << "about " << needed << ", about " << predicted << " output vertices, above the cap of " << cap;
     throw Remeshing_error(message.str(), Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
   }
+}
+
+/// Where to magnify the map after a run with defects: the centre of each defect's
+/// cell in the range space (on the grid face of a closed loop) and its input faces,
+/// and the input face of each intersection vertex of the pieces the complex dropped.
+template <class Tracer, class FaceDescriptor, class Point_d>
+std::vector<std::pair<std::vector<double>, std::vector<FaceDescriptor>>>
+defect_regions(Tracer& tracer, const Primal_complex& complex,
+               const std::vector<Topology_defect<FaceDescriptor>>& defects, const Point_d& origin, double h)
+{
+  std::vector<std::pair<std::vector<double>, std::vector<FaceDescriptor>>> regions;
+  for(const auto& defect : defects) {
+    std::vector<double> centre;
+    for(std::size_t q = 0; q < defect.cell.size(); ++q)
+      centre.push_back(origin[int(q)] + (double(defect.cell[q]) + (int(q) == defect.axis ? 0 : 0.5)) * h);
+    regions.emplace_back(std::move(centre), defect.input_faces);
+  }
+  const auto& vertices = tracer.intersection_vertices();
+  for(std::uint32_t v = 0; v < vertices.size(); ++v)
+    if(!complex.is_kept(v))
+      regions.emplace_back(std::vector<double>(),
+                           std::vector<FaceDescriptor>{tracer.input().face_of_id(vertices[v].face_id)});
+  return regions;
 }
 
 /// Whether `ConcurrencyTag` asks for the parallel scan (refused without TBB).
@@ -323,16 +359,19 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
 
   auto face_index = CGAL::get_initialized_face_index_map(tm, np_in);
   auto vertex_index = CGAL::get_initialized_vertex_index_map(tm, np_in);
-  using Tracer = Grid_tracer<TriangleMesh, Range_map, decltype(face_index),
+  using Magnification = Local_magnification<TriangleMesh, Range_map, decltype(vertex_index), Traits::dimension>;
+  Magnification magnification(tm, range_map, vertex_index);
+  using Tracer = Grid_tracer<TriangleMesh, typename Magnification::Map, decltype(face_index),
                                        decltype(vertex_index), Traits>;
   using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
 
   double h = cell_size;
   double finest_with_defects = 0; // with preserve_topology: the last run refined
+  std::size_t unmagnified_vertices = 0;
   for(std::size_t refinements = 0;;) {
     start = std::chrono::steady_clock::now();
     try {
-      Tracer tracer(tm, range_map, face_index, vertex_index, origin, h, options.maximum_vertices, traits);
+      Tracer tracer(tm, magnification.map(), face_index, vertex_index, origin, h, options.maximum_vertices, traits);
       tracer.set_progress(progress);
       Statistics stats;
       stats.cell_size = h;
@@ -343,7 +382,22 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
 
       const std::vector<Topology_defect<face_descriptor>> defects =
           check_topology_of<face_descriptor>(tracer, *complex, options, stats, progress, start);
+      if(magnification.rounds() == 0)
+        unmagnified_vertices = stats.intersection_vertices;
+      else if(!magnification.was_undone() &&
+              double(stats.intersection_vertices) > local_refinement_budget * double(unmagnified_vertices)) {
+        magnification.undo_last_round();
+        continue;
+      }
+      stats.local_refinements = std::size_t(magnification.rounds());
+      stats.magnified_regions = magnification.number_of_lenses();
+      stats.largest_magnification = magnification.largest_magnification();
+      if(options.refine_locally && refinements == 0 && stats.topology_checked && !stats.topology_preserved() &&
+         may_be_kept_locally(tm, range_map, tracer, *complex, defects, h) &&
+         magnification.magnify_around(defect_regions(tracer, *complex, defects, origin, h), h))
+        continue; // the same cell size, magnified where the defects are
       if(options.preserve && !stats.topology_preserved()) {
+        magnification.clear(); // the whole grid is refined from here
         finest_with_defects = h;
         check_refinement(tm, range_map, tracer, *complex, defects, stats, h, refinements, options.maximum_vertices);
         h *= topology_refinement_factor;
@@ -364,7 +418,12 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
     } catch(const Remeshing_error& error) {
       if(may_move_origin && dynamic_cast<const Lattice_overflow*>(&error) != nullptr) {
         may_move_origin = false; // once, to the input: the same cells, fewer of them from it
-        origin = lattice_point_below<Point_d>(tm, range_map, h);
+        origin = lattice_point_below<Point_d>(tm, magnification.map(), h);
+        continue;
+      }
+      if(error.kind() == Remeshing_error::Kind::OUTPUT_TOO_LARGE && magnification.rounds() > 0 &&
+         !magnification.was_undone()) {
+        magnification.undo_last_round(); // the magnification went past the cap
         continue;
       }
       if(refinements > 0 && error.kind() == Remeshing_error::Kind::CANCELLED)

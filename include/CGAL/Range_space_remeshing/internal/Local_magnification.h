@@ -1,0 +1,309 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_LOCAL_MAGNIFICATION_H
+#define CGAL_RANGE_SPACE_REMESHING_INTERNAL_LOCAL_MAGNIFICATION_H
+
+// The input's topology kept by a local refinement: where the topology check locates a
+// defect, the map is magnified around it, and the run repeats at the same cell size.
+// Each magnified region is a lens in the range space, of centre c, whose scale s
+// falls from S in a ball of radius r0 around c to 1 at a radius R: the input vertices
+// of the surface around the defect (those reached from its faces without leaving the
+// lens) map to c + s(|f(v) - c|) (f(v) - c), every other vertex to f(v). So the cells
+// are S times smaller around the defect and as before away from it, and each face of
+// the output still lies in one cell of the magnified map (section 3 of the paper asks
+// nothing more of f). The radius of a point, r s(r), grows with r, so the lens keeps
+// the surface's order along every ray from c; in the ring between r0 and R it grows
+// by ring_stretch per unit (the ring is the part a magnification that ends must
+// squeeze), which the choice of R keeps fixed, and there cells reach
+// 1 / ring_stretch of a cell across. Only the surface around a defect is magnified,
+// not the whole ball: a map that folds the surface (Gauss map) brings far parts of it
+// near c, and they keep their cells.
+
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <type_traits>
+#include <unordered_map>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+namespace internal {
+
+// the radial growth of a lens in its ring: cells there are at most 4/3 of a cell across
+constexpr double ring_stretch = 0.75;
+// rounds of magnification at most (a place lensed in each is 2^6 times finer)
+constexpr int maximum_local_refinements = 6;
+// the magnification stops (its last round undone) where the output would have more
+// intersection vertices than this times the unmagnified run's, what one refinement of
+// the whole grid costs: past it, defects are everywhere, and a finer grid the remedy
+constexpr double local_refinement_budget = 2;
+
+/// A ball of the range space, the region one defect (or several, merged) needs.
+template <int D>
+struct Range_ball
+{
+  std::array<double, D> center{};
+  double radius = 0;
+};
+
+template <int D>
+double distance(const std::array<double, D>& a, const std::array<double, D>& b)
+{
+  double sum = 0;
+  for(int q = 0; q < D; ++q)
+    sum += (a[q] - b[q]) * (a[q] - b[q]);
+  return std::sqrt(sum);
+}
+
+/// One magnified region: the scale S in the inner ball, 1 from the outer radius on.
+template <int D>
+struct Lens
+{
+  Range_ball<D> inner;
+  double magnification = 2;
+
+  /// R, where r s(r) = S r0 + ring_stretch (r - r0) meets r.
+  double outer_radius() const
+  {
+    return inner.radius * (magnification - ring_stretch) / (1 - ring_stretch);
+  }
+  /// s(r), the scale at distance r from the centre.
+  double scale_at(double r) const
+  {
+    if(r <= inner.radius)
+      return magnification;
+    if(r >= outer_radius())
+      return 1;
+    return (magnification * inner.radius + ring_stretch * (r - inner.radius)) / r;
+  }
+  /// x moved by the lens.
+  std::array<double, D> apply(const std::array<double, D>& x) const
+  {
+    const double s = scale_at(distance<D>(x, inner.center));
+    std::array<double, D> y;
+    for(int q = 0; q < D; ++q)
+      y[q] = inner.center[q] + s * (x[q] - inner.center[q]);
+    return y;
+  }
+};
+
+/// f, magnified on the vertices of the lenses (their values in `moved`, by vertex
+/// index), the range map itself elsewhere: a readable property map of the same values.
+template <class RangeMap, class VertexIndexMap>
+struct Magnified_range_map
+{
+  using key_type = typename boost::property_traits<RangeMap>::key_type;
+  using value_type = std::decay_t<typename boost::property_traits<RangeMap>::value_type>;
+  using reference = value_type;
+  using category = boost::readable_property_map_tag;
+  using Moved = std::unordered_map<std::size_t, value_type>;
+
+  RangeMap range_map;
+  VertexIndexMap vertex_index;
+  const Moved* moved = nullptr; // no lens: none
+
+  friend value_type get(const Magnified_range_map& map, const key_type& v)
+  {
+    if(map.moved != nullptr && !map.moved->empty()) {
+      const auto found = map.moved->find(std::size_t(get(map.vertex_index, v)));
+      if(found != map.moved->end())
+        return found->second;
+    }
+    return get(map.range_map, v);
+  }
+};
+
+/// The lenses of the runs so far, each applied to the values the ones before it gave
+/// (a composition of maps that keep the order along rays: no lens undoes another, and
+/// two at one place multiply), and the values they give.
+template <class TriangleMesh, class RangeMap, class VertexIndexMap, int D>
+class Local_magnification
+{
+public:
+  using Map = Magnified_range_map<RangeMap, VertexIndexMap>;
+  using Point = typename Map::value_type;
+  using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
+  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
+
+  Local_magnification(const TriangleMesh& tm, const RangeMap& range_map, VertexIndexMap vertex_index)
+    : tm_(tm), range_map_(range_map), vertex_index_(vertex_index)
+  {}
+
+  /// The map of the next run.
+  Map map() const { return Map{range_map_, vertex_index_, &moved_}; }
+
+  /// Magnifies the map of the last run twice around each region, at cell size h: a
+  /// ball holding the region's cell (or, for a region without one, its faces), of
+  /// radius at least half a cell's diagonal. `regions` holds pairs of a cell's centre
+  /// (empty: none) and input faces. False, and nothing changes, past the last round.
+  template <class Regions>
+  bool magnify_around(const Regions& regions, double h)
+  {
+    if(rounds_ == maximum_local_refinements || undone_)
+      return false;
+    before_last_round_ = moved_;
+    std::vector<Lens<D>> round;
+    for(const auto& [cell_centre, faces] : regions) {
+      Lens<D> lens;
+      lens.inner = cell_centre.empty() ? ball_of(faces) : Range_ball<D>{to_point(cell_centre), 0};
+      if(!(lens.inner.radius >= 0))
+        continue;
+      lens.inner.radius = (std::max)(lens.inner.radius, h / 2);
+      // a region already in a lens of this round is magnified by it: lenses at one
+      // place stack from round to round, so that it is at most 2^rounds finer
+      if(std::any_of(round.begin(), round.end(), [&](const Lens<D>& earlier) {
+           return distance<D>(earlier.inner.center, lens.inner.center) < earlier.inner.radius;
+         }))
+        continue;
+      for(const Lens<D>& earlier : round) // where the lenses before it moved its centre
+        lens.inner.center = earlier.apply(lens.inner.center);
+      apply(lens, corners_of(faces));
+      round.push_back(lens);
+    }
+    lenses_in_last_round_ = round.size();
+    lenses_ += round.size();
+    largest_ = std::pow(2., rounds_ + 1);
+    ++rounds_;
+    return true;
+  }
+
+  int rounds() const { return rounds_; }
+  std::size_t number_of_lenses() const { return lenses_; }
+  /// an upper bound: the magnification of a place lensed in every round
+  double largest_magnification() const { return largest_; }
+  std::size_t number_of_moved_vertices() const { return moved_.size(); }
+
+  /// Back to the map before the last round, the last round: the output it gave was
+  /// too large.
+  void undo_last_round()
+  {
+    moved_ = std::move(before_last_round_);
+    before_last_round_.clear();
+    --rounds_;
+    lenses_ -= lenses_in_last_round_;
+    largest_ = std::pow(2., rounds_);
+    undone_ = true;
+  }
+  bool was_undone() const { return undone_; }
+
+  /// Back to f.
+  void clear()
+  {
+    moved_.clear();
+    rounds_ = 0;
+    lenses_ = 0;
+    largest_ = 1;
+    undone_ = true; // the refinement is global from here
+  }
+
+private:
+  Point value(vertex_descriptor v) const { return get(map(), v); }
+
+  static Point to_point(const std::vector<double>& x)
+  {
+    Point p;
+    for(int q = 0; q < D; ++q)
+      p[q] = x[std::size_t(q)];
+    return p;
+  }
+
+  /// The ball of the box of the map over the faces' corners (its centre, half its
+  /// diagonal); radius -1 if there is none.
+  template <class FaceRange>
+  Range_ball<D> ball_of(const FaceRange& faces) const
+  {
+    Point low, high;
+    low.fill(std::numeric_limits<double>::infinity());
+    high.fill(-std::numeric_limits<double>::infinity());
+    for(vertex_descriptor v : corners_of(faces)) {
+      const Point x = value(v);
+      for(int q = 0; q < D; ++q) {
+        low[q] = (std::min)(low[q], x[q]);
+        high[q] = (std::max)(high[q], x[q]);
+      }
+    }
+    Range_ball<D> ball;
+    ball.radius = -1;
+    if(!(low[0] <= high[0]))
+      return ball;
+    double sum = 0;
+    for(int q = 0; q < D; ++q) {
+      ball.center[q] = low[q] / 2 + high[q] / 2;
+      sum += (high[q] - low[q]) * (high[q] - low[q]);
+    }
+    ball.radius = std::sqrt(sum) / 2;
+    if(!std::isfinite(ball.radius))
+      ball.radius = -1;
+    return ball;
+  }
+
+  template <class FaceRange>
+  std::vector<vertex_descriptor> corners_of(const FaceRange& faces) const
+  {
+    std::vector<vertex_descriptor> corners;
+    for(face_descriptor g : faces)
+      for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(g, tm_), tm_))
+        corners.push_back(v);
+    return corners;
+  }
+
+  /// Moves the vertices of the surface the lens magnifies: the corners of its region's
+  /// faces, and the vertices reached from them through edges inside its outer ball.
+  /// The ones not reached keep their values; those next to a moved one are outside
+  /// the outer ball, where the lens is the identity, so the map stays continuous.
+  void apply(const Lens<D>& lens, const std::vector<vertex_descriptor>& seeds)
+  {
+    const double outer = lens.outer_radius();
+    std::vector<vertex_descriptor> stack;
+    std::vector<std::pair<std::size_t, Point>> moves;
+    std::unordered_set<std::size_t> seen;
+    auto visit = [&](vertex_descriptor v) {
+      const std::size_t id = std::size_t(get(vertex_index_, v));
+      if(!seen.insert(id).second)
+        return;
+      moves.emplace_back(id, lens.apply(value(v)));
+      stack.push_back(v);
+    };
+    for(vertex_descriptor v : seeds)
+      visit(v);
+    while(!stack.empty()) {
+      const vertex_descriptor v = stack.back();
+      stack.pop_back();
+      for(vertex_descriptor w : CGAL::vertices_around_target(v, tm_))
+        if(distance<D>(value(w), lens.inner.center) < outer)
+          visit(w);
+    }
+    for(auto& [id, y] : moves)
+      moved_[id] = y;
+  }
+
+  const TriangleMesh& tm_;
+  RangeMap range_map_;
+  VertexIndexMap vertex_index_;
+  typename Map::Moved moved_, before_last_round_;
+  int rounds_ = 0;
+  bool undone_ = false;
+  std::size_t lenses_in_last_round_ = 0;
+  std::size_t lenses_ = 0;
+  double largest_ = 1;
+};
+
+} // namespace internal
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_INTERNAL_LOCAL_MAGNIFICATION_H
