@@ -48,11 +48,14 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out, const Na
     if(target == 0)
       return primal_remesh_at(h, tm, out, np_in, np_out, inspect, progress, tag);
     Statistics stats;
-    search_cell_size(h, target, [&](double h_try) {
+    bool refine_around_defects = true;
+    search_then_refine_around_defects(h, target, refine_around_defects, [&](double h_try) {
       remove_all_elements(out);
-      stats = primal_remesh_at(h_try, tm, out, np_in, np_out, inspect, progress, tag);
+      stats = primal_remesh_at(h_try, tm, out, np_in, np_out, inspect, progress, tag, Parallel_edges::SPLIT,
+                               refine_around_defects);
       return stats.output_vertices;
-    }, CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np_in, internal_np::preserve_topology), false));
+    }, [&] { return stats.topology_checked && !stats.topology_preserved(); },
+    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np_in, internal_np::preserve_topology), false));
     return stats;
   });
 }
@@ -155,7 +158,7 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
     \cgalParamNBegin{refine_around_defects}
       \cgalParamDescription{whether to refine the cells where the check finds defects, at the
                             cell size asked: the run repeats with f magnified twice around each
-                            defect (a lens of the range space holding its cell, on the surface
+                            defect (a lens of the range space centred on its cell, on the surface
                             around it), at most 6 times, until the check finds none; the lenses
                             of one round each add to those of the rounds before.
                             `Statistics::local_refinements` and `Statistics::magnified_regions`
@@ -167,8 +170,11 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
                       by the magnification in a lens, and up to \f$(4/3)^k\f$ cells radially in
                       the ring where a lens ends (k the rounds). A round whose output has more than
                       twice the intersection vertices of the run without lenses is undone,
-                      and the refinement stops there: defects that many call for a smaller cell
-                      size (`preserve_topology`).}
+                      and the refinement stops there (so many defects call for a smaller cell
+                      size: `preserve_topology`); it also stops after two rounds that bring the
+                      output no closer to the input's topology (Euler characteristic and
+                      components first, then the defects), and the run closest to it is the
+                      one returned, so the result is never further from it than without.}
     \cgalParamNEnd
     \cgalParamNBegin{preserve_topology}
       \cgalParamDescription{whether to make sure the output has the topology of `tm`: first by

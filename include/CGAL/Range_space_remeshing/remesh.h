@@ -80,6 +80,9 @@ struct Quad_improvement
   // With a target vertex count, the untangling runs only in a run that the search
   // accepts (it moves vertices, it keeps their count): not in the runs it throws away.
   std::size_t untangle_near_target = 0;
+  // false in the target search's first runs: refine_around_defects only once a cell
+  // size near the target is found (it adds a few vertices, for thrice the runs)
+  bool refine_around_defects = true;
 };
 
 template <class NamedParameters>
@@ -153,7 +156,7 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
   auto remesh_primal = [&](const auto& np_primal_out) {
     // parallel edges kept: the dual undoes them (a vertex of valence 2 would give it a digon)
     stats.primal = primal_remesh_at(h, tm, primal, np, np_primal_out, No_inspection(), progress, ConcurrencyTag(),
-                                    Parallel_edges::KEEP);
+                                    Parallel_edges::KEEP, improvement.refine_around_defects);
     frame = Working_frame::of(primal, primal.points());
     frame.move_into(primal, primal.points());
     planes_pool.decompositions.reserve(num_faces(primal)); // one per dual vertex of a face
@@ -286,11 +289,12 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
     if(target == 0)
       stats = remesh_keeping_topology<ConcurrencyTag>(h, tm, quads, np, np_out, improvement, progress);
     else
-      search_cell_size(h, target, [&](double h_try) {
+      search_then_refine_around_defects(h, target, improvement.refine_around_defects, [&](double h_try) {
         remove_all_elements(quads);
         stats = remesh_keeping_topology<ConcurrencyTag>(h_try, tm, quads, np, np_out, improvement, progress);
         return std::size_t(num_vertices(quads));
-      }, CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::preserve_topology), false));
+      }, [&] { return stats.primal.topology_checked && !stats.primal.topology_preserved(); },
+      CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::preserve_topology), false));
     stats.time_attributes_ms = sample_vertex_attributes(tm, quads, np, np_out, progress);
     stats.time_total_ms += stats.time_attributes_ms;
     return stats;

@@ -177,6 +177,29 @@ double search_cell_size(double h, std::size_t target, const Run& run, bool keeps
                         Remeshing_error::Kind::TARGET_NOT_REACHED);
 }
 
+/// `search_cell_size()` with the refinement around defects off (`refine_around_defects`
+/// false while it searches; but where the topology must be kept), then one run at the size found with it on, as the caller
+/// asked; where that run's count is off the target, the search goes on from there with
+/// it on. The refinement adds a few vertices where defects are, and up to six runs to
+/// each: not to the runs the search throws away. `had_defects()`: whether the last run
+/// found some (else the run found is the one asked for).
+template <class Run, class HadDefects>
+double search_then_refine_around_defects(double h, std::size_t target, bool& refine_around_defects, const Run& run,
+                                         const HadDefects& had_defects, bool keeps_topology)
+{
+  // keeps_topology (preserve_topology): the search needs each trial's kept topology
+  if(!refine_around_defects || keeps_topology)
+    return search_cell_size(h, target, run, keeps_topology);
+  refine_around_defects = false;
+  h = search_cell_size(h, target, run, keeps_topology);
+  refine_around_defects = true;
+  if(!had_defects())
+    return h;
+  if(is_near_target((std::max)(run(h), std::size_t(1)), target))
+    return h;
+  return search_cell_size(h, target, run, keeps_topology);
+}
+
 /// The cell size of `np`: `grid_spacing`, or the default relative to the mapped input.
 template <class TriangleMesh, class NamedParameters>
 double cell_size_of(const TriangleMesh& tm, const NamedParameters& np)

@@ -6,21 +6,27 @@
 #ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_LOCAL_MAGNIFICATION_H
 #define CGAL_RANGE_SPACE_REMESHING_INTERNAL_LOCAL_MAGNIFICATION_H
 
-// The input's topology kept by a local refinement: where the topology check locates a
-// defect, the map is magnified around it, and the run repeats at the same cell size.
-// Each magnified region is a lens in the range space, of centre c, whose scale s
-// falls from S in a ball of radius r0 around c to 1 at a radius R: the input vertices
-// of the surface around the defect (those reached from its faces without leaving the
-// lens) map to c + s(|f(v) - c|) (f(v) - c), every other vertex to f(v). So the cells
-// are S times smaller around the defect and as before away from it, and each face of
-// the output still lies in one cell of the magnified map (section 3 of the paper asks
-// nothing more of f). The radius of a point, r s(r), grows with r, so the lens keeps
-// the surface's order along every ray from c; in the ring between r0 and R it grows
-// by ring_stretch per unit (the ring is the part a magnification that ends must
-// squeeze), which the choice of R keeps fixed, and there cells reach
-// 1 / ring_stretch of a cell across. Only the surface around a defect is magnified,
-// not the whole ball: a map that folds the surface (Gauss map) brings far parts of it
-// near c, and they keep their cells.
+// The input's topology kept by a local refinement (refine_around_defects): where the
+// topology check locates a defect, the map is magnified around it, and the run repeats
+// at the same cell size. The grid stays one grid, so the output stays one valid
+// complex; what changes is f. A lens of centre c (the defect's cell) scales the
+// distance r to c by s(r): S = 2 in a ball of radius r0, then less through a ring to
+// 1 at a radius R. It moves the input vertices of the surface around the defect (its
+// faces' corners, and the vertices reached from them by edges inside the ring) to
+// c + s(|f(v) - c|) (f(v) - c); every other vertex keeps its value. Cells there are
+// then half as large in f, elsewhere as asked, and each face of the output still lies
+// in one cell of the magnified map (section 3 of the paper asks nothing more of f).
+//
+// r s(r) grows with r, so a lens keeps the order of points along each ray from c. A
+// magnification that ends must squeeze somewhere: the ring grows radially by only
+// ring_stretch per unit, which fixes R, so there cells reach 1 / ring_stretch of a
+// cell in f. Each round's lenses apply to the values the rounds before gave: a defect
+// left inside a lens gets a lens of its own the next round, and the two multiply.
+// Only the surface around a defect moves, not all of the ball: a map that folds the
+// surface (the Gauss map) brings far parts of it near c, and they keep their cells.
+
+#include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/internal/Cell_size.h>
 
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -43,16 +49,22 @@ namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
 
-// the radial growth of a lens in its ring: cells there are at most 4/3 of a cell across
+// the radial growth of a lens in its ring: cells there reach 4/3 of a cell across
 constexpr double ring_stretch = 0.75;
 // rounds of magnification at most (a place lensed in each is 2^6 times finer)
 constexpr int maximum_local_refinements = 6;
 // the magnification stops (its last round undone) where the output would have more
 // intersection vertices than this times the unmagnified run's, what one refinement of
-// the whole grid costs: past it, defects are everywhere, and a finer grid the remedy
+// the whole grid costs: past it, defects are everywhere, and a finer grid the remedy.
+// Where the rounds end with more defects than an earlier run, that run's lenses are kept.
 constexpr double local_refinement_budget = 2;
+// a magnified run stops at this many intersection vertices at least: the budget's
+// early stop is for large runs, a small one ends before it matters
+constexpr double smallest_budget_cap = 100000;
+// and where this many rounds in a row bring it no closer to the input's topology
+constexpr int maximum_rounds_without_progress = 2;
 
-/// A ball of the range space, the region one defect (or several, merged) needs.
+/// A ball of the range space.
 template <int D>
 struct Range_ball
 {
@@ -61,7 +73,7 @@ struct Range_ball
 };
 
 template <int D>
-double distance(const std::array<double, D>& a, const std::array<double, D>& b)
+double range_distance(const std::array<double, D>& a, const std::array<double, D>& b)
 {
   double sum = 0;
   for(int q = 0; q < D; ++q)
@@ -93,7 +105,7 @@ struct Lens
   /// x moved by the lens.
   std::array<double, D> apply(const std::array<double, D>& x) const
   {
-    const double s = scale_at(distance<D>(x, inner.center));
+    const double s = scale_at(range_distance<D>(x, inner.center));
     std::array<double, D> y;
     for(int q = 0; q < D; ++q)
       y[q] = inner.center[q] + s * (x[q] - inner.center[q]);
@@ -146,14 +158,15 @@ public:
   /// The map of the next run.
   Map map() const { return Map{range_map_, vertex_index_, &moved_}; }
 
-  /// Magnifies the map of the last run twice around each region, at cell size h: a
-  /// ball holding the region's cell (or, for a region without one, its faces), of
-  /// radius at least half a cell's diagonal. `regions` holds pairs of a cell's centre
-  /// (empty: none) and input faces. False, and nothing changes, past the last round.
+  /// Magnifies the map of the last run twice around each region, at cell size h: in a
+  /// ball of radius h / 2 around the region's cell centre (for a region without a
+  /// cell, a lost piece, the ball of its faces, no smaller). `regions` holds pairs of a
+  /// cell's centre (empty: none) and input faces. False, and nothing changes, past the
+  /// last round, after an undone one, or after rounds without progress.
   template <class Regions>
   bool magnify_around(const Regions& regions, double h)
   {
-    if(rounds_ == maximum_local_refinements || undone_)
+    if(rounds_ == maximum_local_refinements || undone_ || rounds_without_progress_ == maximum_rounds_without_progress)
       return false;
     before_last_round_ = moved_;
     std::vector<Lens<D>> round;
@@ -166,7 +179,7 @@ public:
       // a region already in a lens of this round is magnified by it: lenses at one
       // place stack from round to round, so that it is at most 2^rounds finer
       if(std::any_of(round.begin(), round.end(), [&](const Lens<D>& earlier) {
-           return distance<D>(earlier.inner.center, lens.inner.center) < earlier.inner.radius;
+           return range_distance<D>(earlier.inner.center, lens.inner.center) < earlier.inner.radius;
          }))
         continue;
       for(const Lens<D>& earlier : round) // where the lenses before it moved its centre
@@ -182,13 +195,74 @@ public:
   }
 
   int rounds() const { return rounds_; }
-  std::size_t number_of_lenses() const { return lenses_; }
-  /// an upper bound: the magnification of a place lensed in every round
-  double largest_magnification() const { return largest_; }
-  std::size_t number_of_moved_vertices() const { return moved_.size(); }
 
-  /// Back to the map before the last round, the last round: the output it gave was
-  /// too large.
+  /// The cap on the intersection vertices of the next run: `cap`, and for a magnified
+  /// run the budget too (the unmagnified run's count times local_refinement_budget),
+  /// so that a round too large for it stops as early as the cap can tell.
+  std::size_t cap(std::size_t cap) const
+  {
+    if(rounds_ == 0 || undone_)
+      return cap;
+    const double budget = (std::max)(local_refinement_budget * double(unmagnified_vertices_), smallest_budget_cap);
+    return (std::min)(cap, std::size_t(budget) + 1);
+  }
+
+  /// After a run with `intersection_vertices` and `defects` (its distance to the
+  /// input's topology): true, and back to the map before the last round, the last one,
+  /// where that round passed the budget. Else records the run: the unmagnified one's
+  /// count, and the lenses of the run with the fewest defects so far.
+  bool undo_if_over_budget(std::size_t intersection_vertices, std::size_t defects)
+  {
+    if(rounds_ == 0)
+      unmagnified_vertices_ = intersection_vertices;
+    else if(!undone_ && double(intersection_vertices) > local_refinement_budget * double(unmagnified_vertices_)) {
+      undo_last_round();
+      return true;
+    }
+    if(rounds_ == 0 || defects < best_.defects) {
+      best_ = Best{moved_, rounds_, lenses_, largest_, defects};
+      rounds_without_progress_ = 0;
+    } else {
+      ++rounds_without_progress_;
+    }
+    return false;
+  }
+
+  /// Where the refinement ends with more defects than a run before it had (a round's
+  /// rings can add some): true, and back to that run's lenses, the last.
+  bool restore_fewest_defects(std::size_t defects)
+  {
+    if(rounds_ == 0 || restored_ || !(best_.defects < defects))
+      return false;
+    moved_ = best_.moved;
+    rounds_ = best_.rounds;
+    lenses_ = best_.lenses;
+    largest_ = best_.largest;
+    undone_ = restored_ = true;
+    return true;
+  }
+
+  /// After a run that failed with `error`: true, and back to the map before the last
+  /// round, the last one, where that round failed (its output passed the cap or the
+  /// budget, or a face of it crossed too many levels) but the run before it did not.
+  bool undo_if_failed(const Remeshing_error& error)
+  {
+    if(error.kind() == Remeshing_error::Kind::CANCELLED || rounds_ == 0 || undone_)
+      return false;
+    undo_last_round();
+    return true;
+  }
+
+  /// What the refinement did, in the statistics of the run it gave.
+  template <class Statistics>
+  void report(Statistics& stats) const
+  {
+    stats.local_refinements = std::size_t(rounds_);
+    stats.magnified_regions = lenses_;
+    stats.largest_magnification = largest_;
+  }
+
+  /// Back to the map before the last round, the last one: its output is too large.
   void undo_last_round()
   {
     moved_ = std::move(before_last_round_);
@@ -198,7 +272,6 @@ public:
     largest_ = std::pow(2., rounds_);
     undone_ = true;
   }
-  bool was_undone() const { return undone_; }
 
   /// Back to f.
   void clear()
@@ -226,24 +299,15 @@ private:
   template <class FaceRange>
   Range_ball<D> ball_of(const FaceRange& faces) const
   {
-    Point low, high;
-    low.fill(std::numeric_limits<double>::infinity());
-    high.fill(-std::numeric_limits<double>::infinity());
-    for(vertex_descriptor v : corners_of(faces)) {
-      const Point x = value(v);
-      for(int q = 0; q < D; ++q) {
-        low[q] = (std::min)(low[q], x[q]);
-        high[q] = (std::max)(high[q], x[q]);
-      }
-    }
+    const auto box = mapped_box_of<D>(map(), corners_of(faces));
     Range_ball<D> ball;
     ball.radius = -1;
-    if(!(low[0] <= high[0]))
+    if(!(box[0][0] <= box[1][0]))
       return ball;
     double sum = 0;
     for(int q = 0; q < D; ++q) {
-      ball.center[q] = low[q] / 2 + high[q] / 2;
-      sum += (high[q] - low[q]) * (high[q] - low[q]);
+      ball.center[q] = box[0][q] / 2 + box[1][q] / 2;
+      sum += (box[1][q] - box[0][q]) * (box[1][q] - box[0][q]);
     }
     ball.radius = std::sqrt(sum) / 2;
     if(!std::isfinite(ball.radius))
@@ -284,7 +348,7 @@ private:
       const vertex_descriptor v = stack.back();
       stack.pop_back();
       for(vertex_descriptor w : CGAL::vertices_around_target(v, tm_))
-        if(distance<D>(value(w), lens.inner.center) < outer)
+        if(range_distance<D>(value(w), lens.inner.center) < outer)
           visit(w);
     }
     for(auto& [id, y] : moves)
@@ -298,6 +362,17 @@ private:
   int rounds_ = 0;
   bool undone_ = false;
   std::size_t lenses_in_last_round_ = 0;
+  std::size_t unmagnified_vertices_ = 0;
+  struct Best
+  {
+    typename Map::Moved moved;
+    int rounds = 0;
+    std::size_t lenses = 0;
+    double largest = 1;
+    std::size_t defects = 0;
+  } best_; // the run with the fewest defects
+  bool restored_ = false;
+  int rounds_without_progress_ = 0; // since the run with the fewest defects
   std::size_t lenses_ = 0;
   double largest_ = 1;
 };

@@ -34,6 +34,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <cstddef>
 #include <cstdint>
 #include <iomanip>
@@ -194,6 +195,32 @@ inline Remeshing_error refinement_failure(const Remeshing_error& error, std::siz
                          Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED);
 }
 
+/// How far a checked run is from the input's topology, what the refinement around
+/// defects must lower: first the differences in Euler characteristic and components,
+/// then the defects the check counted and the pieces the complex dropped.
+inline std::size_t topology_distance(const Statistics& stats)
+{
+  const std::size_t differences =
+      std::size_t(std::abs(stats.output_euler_characteristic - stats.input_euler_characteristic)) +
+      std::size_t(std::abs(long(stats.output_components) - long(stats.input_components)));
+  const std::size_t defects = stats.closed_loops + stats.non_disk_cells + stats.lost_components +
+                              stats.uncrossed_border_cycles + stats.dropped_pieces;
+  return differences * (std::size_t(1) << 32) + (std::min)(defects, (std::size_t(1) << 32) - 1);
+}
+
+/// Ends a run that failed with `error`, the exception being handled: a cancel after
+/// refinements says how far they got, an error of a refined run says it is one.
+[[noreturn]] inline void rethrow_run_error(const Remeshing_error& error, std::size_t refinements,
+                                           double finest_with_defects, double h)
+{
+  if(refinements > 0 && error.kind() == Remeshing_error::Kind::CANCELLED)
+    throw Remeshing_cancelled(refinements, finest_with_defects); // what the refinement reached
+  if(refinements == 0 || error.kind() == Remeshing_error::Kind::CANCELLED ||
+     error.kind() == Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED)
+    throw; // as it is: a Remeshing_cancelled stays one, check_refinement()'s says the refinements
+  throw refinement_failure(error, refinements, h);
+}
+
 /// The extent in f (the longest side of the bounding box of their vertices' values)
 /// of input faces; zero if there are none.
 template <class TriangleMesh, class RangeMap, class FaceRange>
@@ -332,7 +359,7 @@ template <class TriangleMesh, class PolygonMesh, class NamedParametersIn, class 
 Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMesh& out,
                             const NamedParametersIn& np_in, const NamedParametersOut& np_out,
                             const Inspector& inspect, const Progress& progress, ConcurrencyTag,
-                            Parallel_edges parallel_edges = Parallel_edges::SPLIT)
+                            Parallel_edges parallel_edges = Parallel_edges::SPLIT, bool refine_around_defects = true)
 {
   constexpr bool parallel = runs_in_parallel<ConcurrencyTag>();
   using CGAL::parameters::choose_parameter;
@@ -353,7 +380,8 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
   Point_d origin = choose_parameter(get_parameter(np_in, internal_np::grid_origin), Point_d{});
   check_grid(cell_size, origin);
   bool may_move_origin = CGAL::parameters::is_default_parameter<NamedParametersIn, internal_np::grid_origin_t>::value;
-  const Primal_run_options options = primal_run_options(np_in);
+  Primal_run_options options = primal_run_options(np_in);
+  options.refine_locally = options.refine_locally && refine_around_defects; // off in a target search's trials
   const auto visitor =
       choose_parameter(get_parameter(np_in, internal_np::topology_visitor), No_topology_visitor());
 
@@ -367,11 +395,11 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
 
   double h = cell_size;
   double finest_with_defects = 0; // with preserve_topology: the last run refined
-  std::size_t unmagnified_vertices = 0;
   for(std::size_t refinements = 0;;) {
     start = std::chrono::steady_clock::now();
     try {
-      Tracer tracer(tm, magnification.map(), face_index, vertex_index, origin, h, options.maximum_vertices, traits);
+      Tracer tracer(tm, magnification.map(), face_index, vertex_index, origin, h,
+                    magnification.cap(options.maximum_vertices), traits);
       tracer.set_progress(progress);
       Statistics stats;
       stats.cell_size = h;
@@ -382,20 +410,15 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
 
       const std::vector<Topology_defect<face_descriptor>> defects =
           check_topology_of<face_descriptor>(tracer, *complex, options, stats, progress, start);
-      if(magnification.rounds() == 0)
-        unmagnified_vertices = stats.intersection_vertices;
-      else if(!magnification.was_undone() &&
-              double(stats.intersection_vertices) > local_refinement_budget * double(unmagnified_vertices)) {
-        magnification.undo_last_round();
-        continue;
-      }
-      stats.local_refinements = std::size_t(magnification.rounds());
-      stats.magnified_regions = magnification.number_of_lenses();
-      stats.largest_magnification = magnification.largest_magnification();
+      if(magnification.undo_if_over_budget(stats.intersection_vertices, topology_distance(stats)))
+        continue; // the run before the last round, kept
+      magnification.report(stats);
       if(options.refine_locally && refinements == 0 && stats.topology_checked && !stats.topology_preserved() &&
          may_be_kept_locally(tm, range_map, tracer, *complex, defects, h) &&
          magnification.magnify_around(defect_regions(tracer, *complex, defects, origin, h), h))
         continue; // the same cell size, magnified where the defects are
+      if(!options.preserve && magnification.restore_fewest_defects(topology_distance(stats)))
+        continue; // the run of the rounds with the fewest defects, kept
       if(options.preserve && !stats.topology_preserved()) {
         magnification.clear(); // the whole grid is refined from here
         finest_with_defects = h;
@@ -421,17 +444,9 @@ Statistics primal_remesh_at(double cell_size, const TriangleMesh& tm, PolygonMes
         origin = lattice_point_below<Point_d>(tm, magnification.map(), h);
         continue;
       }
-      if(error.kind() == Remeshing_error::Kind::OUTPUT_TOO_LARGE && magnification.rounds() > 0 &&
-         !magnification.was_undone()) {
-        magnification.undo_last_round(); // the magnification went past the cap
+      if(magnification.undo_if_failed(error))
         continue;
-      }
-      if(refinements > 0 && error.kind() == Remeshing_error::Kind::CANCELLED)
-        throw Remeshing_cancelled(refinements, finest_with_defects); // what the refinement reached
-      if(refinements == 0 || error.kind() == Remeshing_error::Kind::CANCELLED ||
-         error.kind() == Remeshing_error::Kind::TOPOLOGY_NOT_PRESERVED)
-        throw; // as it is: a Remeshing_cancelled stays one, check_refinement()'s says the refinements
-      throw refinement_failure(error, refinements, h);
+      rethrow_run_error(error, refinements, finest_with_defects, h);
     }
   }
 }
