@@ -64,6 +64,7 @@ enum class Dual_placement
 
 namespace internal_np {
 enum range_map_t { range_map };
+enum sizing_field_t { sizing_field };
 enum grid_origin_t { grid_origin };
 enum seed_faces_t { seed_faces };
 enum dual_placement_t { dual_placement };
@@ -85,6 +86,7 @@ enum progress_visitor_t { progress_visitor };
 // functions that start a chain.
 #define CGAL_RANGE_SPACE_REMESHING_EACH_PARAMETER(P)                                   \
   P(internal_np, range_map_t, range_map)                                                 \
+  P(internal_np, sizing_field_t, sizing_field)                                           \
   P(internal_np, grid_origin_t, grid_origin)                                             \
   P(internal_np, seed_faces_t, seed_faces)                                               \
   P(internal_np, dual_placement_t, dual_placement)                                       \

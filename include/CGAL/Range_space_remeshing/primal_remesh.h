@@ -12,6 +12,7 @@
 // internal/Primal_parameters.h, the cell size in internal/Cell_size.h.
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/Sized_range_map.h>
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Cell_size.h>
@@ -102,6 +103,17 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
       \cgalParamType{a readable property map with `std::array<double, D>` values, 3 <= D <= 16}
       \cgalParamDefault{`Identity_range_map` of the vertex point map (D = 3)}
       \cgalParamExtra{evaluated lazily, once per input vertex of a visited triangle}
+    \cgalParamNEnd
+    \cgalParamNBegin{sizing_field}
+      \cgalParamDescription{a scale s of f per input vertex: where s is 2 the cells are half as
+                            large in f, and the output about twice as fine in each direction.
+                            f is replaced by its `Sized_range_map`, whose differential is s df
+                            in the least-squares sense; the cell size and the grid origin are
+                            in its units}
+      \cgalParamType{a readable property map, vertex -> positive finite double}
+      \cgalParamDefault{none: the scale 1 everywhere}
+      \cgalParamExtra{computed before the run, by a sparse solve over all the input's vertices
+                      (also in the seeded mode), which no visitor can cancel}
     \cgalParamNEnd
     \cgalParamNBegin{grid_spacing}
       \cgalParamDescription{the cell size h of the grid, in units of f}
@@ -286,7 +298,9 @@ Statistics primal_remesh(const TriangleMesh& tm, PolygonMesh& out,
     internal::refuse_range_map<typename internal::Range_map_of<TriangleMesh, NamedParametersIn>::type>();
     return Statistics();
   } else
-    return internal::primal_remesh_impl(tm, out, np_in, np_out, internal::No_inspection(), ConcurrencyTag());
+    return internal::with_sizing_field(tm, np_in, [&](const auto& np) {
+      return internal::primal_remesh_impl(tm, out, np, np_out, internal::No_inspection(), ConcurrencyTag());
+    });
 }
 
 } // namespace Range_space_remeshing

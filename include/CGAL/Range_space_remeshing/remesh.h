@@ -450,7 +450,9 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
     internal::refuse_range_map<typename internal::Range_map_of<TriangleMesh, NamedParameters>::type>();
     return Remesh_statistics();
   } else
-    return internal::remesh_impl<ConcurrencyTag>(tm, quads, np, np_out);
+    return internal::with_sizing_field(tm, np, [&](const auto& sized_np) {
+      return internal::remesh_impl<ConcurrencyTag>(tm, quads, sized_np, np_out);
+    });
 }
 
 } // namespace Range_space_remeshing

@@ -167,7 +167,7 @@ constexpr bool check_primal_remesh_parameters()
 {
   namespace np = internal_np;
   namespace cgal_np = CGAL::internal_np;
-  return check_named_parameters<Function, NamedParameters, np::range_map_t, cgal_np::grid_spacing_t,
+  return check_named_parameters<Function, NamedParameters, np::range_map_t, np::sizing_field_t, cgal_np::grid_spacing_t,
                                 np::number_of_target_vertices_t, np::grid_origin_t, cgal_np::seeding_method_t,
                                 np::seed_faces_t, cgal_np::maximum_number_t, np::check_topology_t,
                                 np::preserve_topology_t, np::refine_around_defects_t, np::topology_visitor_t,

@@ -1,0 +1,181 @@
+// Copyright (c) 2026 Range_space_remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Author(s) : Range_space_remeshing team
+
+#ifndef CGAL_RANGE_SPACE_REMESHING_INTERNAL_SCALED_DIFFERENTIAL_H
+#define CGAL_RANGE_SPACE_REMESHING_INTERNAL_SCALED_DIFFERENTIAL_H
+
+// The map behind a sizing field s (Sized_range_map): the map g whose differential is
+// s times f's. Where s is constant, g = s f up to a translation, and the grid of g is
+// the grid of f with cells 1/s as large. Where s varies, s df is not the differential
+// of any map (it is not a closed form), so g is the closest one over the input's edges,
+// each edge's error relative to the length asked of it:
+//
+//   minimise  sum over the edges ij of  |(g_j - g_i) - s_ij (f_j - f_i)|^2 / s_ij^2,
+//   s_ij = (s_i + s_j) / 2.
+//
+// Measured against the plain sum, the relative one leaves the coarse parts closer to f
+// and the fine ones closer to s f: the error a closed surface forces goes where cells
+// are small. The normal equations are L g = b, L the Laplacian of the edge graph with
+// weights w_ij = 1 / s_ij^2, and b_i = sum over the neighbours j of w_ij s_ij (f_i - f_j).
+// Each coordinate is solved on its own by conjugate gradients preconditioned by L's
+// diagonal, from g = f. L is singular (translations of each connected component), but
+// b sums to zero over each component, so the system is consistent and the iteration
+// converges. Any g gives a valid remesh (each face in one cell of g): the solve's
+// accuracy only sets how closely the cells follow s.
+//
+// The solver is hand-written: the library depends on CGAL, Boost, GMP and MPFR only,
+// and CGAL's sparse solvers need Eigen.
+
+#include <CGAL/Range_space_remeshing/Remeshing_error.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Range_space_remeshing {
+namespace internal {
+
+// the conjugate gradients stop when the residual is this small against b's
+constexpr double sizing_solve_tolerance = 1e-6;
+// or after this many iterations: the solve's error only blurs the sizing
+constexpr int maximum_sizing_solve_iterations = 5000;
+
+/// The edges of the input as adjacency lists (compressed rows), with the scale s_ij
+/// and the weight w_ij of each, and L's diagonal.
+struct Scaled_edge_graph
+{
+  std::vector<std::size_t> first; // neighbours of i: first[i] .. first[i + 1]
+  std::vector<std::size_t> neighbour;
+  std::vector<double> scale, weight;
+  std::vector<double> diagonal; // sum of the weights at i
+
+  std::size_t size() const { return diagonal.size(); }
+
+  /// y = L x
+  void multiply(const std::vector<double>& x, std::vector<double>& y) const
+  {
+    for(std::size_t i = 0; i < size(); ++i) {
+      double sum = diagonal[i] * x[i];
+      for(std::size_t k = first[i]; k < first[i + 1]; ++k)
+        sum -= weight[k] * x[neighbour[k]];
+      y[i] = sum;
+    }
+  }
+};
+
+/// The graph of `edges` (pairs of vertex indices below n; loops skipped, a repeated
+/// edge counted as often as it comes), with s_ij from the per-vertex `sizing`.
+inline Scaled_edge_graph scaled_edge_graph(std::size_t n, const std::vector<std::pair<std::size_t, std::size_t>>& edges,
+                                           const std::vector<double>& sizing)
+{
+  Scaled_edge_graph graph;
+  graph.first.assign(n + 1, 0);
+  for(const auto& [i, j] : edges)
+    if(i != j) {
+      ++graph.first[i + 1];
+      ++graph.first[j + 1];
+    }
+  for(std::size_t i = 0; i < n; ++i)
+    graph.first[i + 1] += graph.first[i];
+  graph.neighbour.resize(graph.first[n]);
+  graph.scale.resize(graph.first[n]);
+  graph.weight.resize(graph.first[n]);
+  graph.diagonal.assign(n, 0.);
+  std::vector<std::size_t> next(graph.first.begin(), graph.first.end() - 1);
+  for(const auto& [i, j] : edges)
+    if(i != j) {
+      const double s = 0.5 * (sizing[i] + sizing[j]);
+      const double w = 1 / (s * s);
+      for(const auto& [from, to] : {std::make_pair(i, j), std::make_pair(j, i)}) {
+        graph.neighbour[next[from]] = to;
+        graph.scale[next[from]] = s;
+        graph.weight[next[from]++] = w;
+        graph.diagonal[from] += w;
+      }
+    }
+  return graph;
+}
+
+inline double dot(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double sum = 0;
+  for(std::size_t i = 0; i < a.size(); ++i)
+    sum += a[i] * b[i];
+  return sum;
+}
+
+/// Solves L g = b for one coordinate by conjugate gradients preconditioned by L's
+/// diagonal, from g.
+inline void solve_scaled_coordinate(const Scaled_edge_graph& graph, const std::vector<double>& b, std::vector<double>& g)
+{
+  const std::size_t n = graph.size();
+  std::vector<double> r(n), z(n), p(n), lp(n);
+  graph.multiply(g, lp);
+  for(std::size_t i = 0; i < n; ++i)
+    r[i] = b[i] - lp[i];
+  const double goal = sizing_solve_tolerance * std::sqrt(dot(b, b));
+  auto precondition = [&] {
+    for(std::size_t i = 0; i < n; ++i)
+      z[i] = graph.diagonal[i] > 0 ? r[i] / graph.diagonal[i] : 0.;
+  };
+  precondition();
+  p = z;
+  double rz = dot(r, z);
+  for(int iteration = 0; iteration < maximum_sizing_solve_iterations; ++iteration) {
+    if(!(std::sqrt(dot(r, r)) > goal))
+      return;
+    graph.multiply(p, lp);
+    const double curvature = dot(p, lp);
+    if(!(curvature > 0))
+      return; // p in L's kernel: nothing left to reduce
+    const double alpha = rz / curvature;
+    for(std::size_t i = 0; i < n; ++i) {
+      g[i] += alpha * p[i];
+      r[i] -= alpha * lp[i];
+    }
+    precondition();
+    const double rz_next = dot(r, z);
+    const double beta = rz_next / rz;
+    rz = rz_next;
+    for(std::size_t i = 0; i < n; ++i)
+      p[i] = z[i] + beta * p[i];
+  }
+}
+
+/// g for the values `f` and the scales `sizing` of n vertices joined by `edges`.
+template <int D>
+std::vector<std::array<double, D>> scaled_differential(const std::vector<std::array<double, D>>& f,
+                                                       const std::vector<double>& sizing,
+                                                       const std::vector<std::pair<std::size_t, std::size_t>>& edges)
+{
+  const std::size_t n = f.size();
+  const Scaled_edge_graph graph = scaled_edge_graph(n, edges, sizing);
+  std::vector<std::array<double, D>> g(f);
+  std::vector<double> b(n), column(n);
+  for(int q = 0; q < D; ++q) {
+    for(std::size_t i = 0; i < n; ++i) {
+      double sum = 0;
+      for(std::size_t k = graph.first[i]; k < graph.first[i + 1]; ++k)
+        sum += graph.weight[k] * graph.scale[k] * (f[i][q] - f[graph.neighbour[k]][q]);
+      b[i] = sum;
+      column[i] = f[i][q];
+    }
+    solve_scaled_coordinate(graph, b, column);
+    for(std::size_t i = 0; i < n; ++i)
+      g[i][q] = column[i];
+  }
+  return g;
+}
+
+} // namespace internal
+} // namespace Range_space_remeshing
+} // namespace CGAL
+
+#endif // CGAL_RANGE_SPACE_REMESHING_INTERNAL_SCALED_DIFFERENTIAL_H
