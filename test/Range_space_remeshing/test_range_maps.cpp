@@ -9,6 +9,7 @@
 #include <CGAL/Range_space_remeshing/Gauss_range_map.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
+#include <CGAL/Range_space_remeshing/Sized_range_map.h>
 #include <CGAL/Range_space_remeshing/View_range_map.h>
 #include <CGAL/Range_space_remeshing/insert_crease_triangles.h>
 
@@ -570,8 +571,93 @@ void test_one_pass_normals()
   CHECK(off_constant < 1e-15);
 }
 
+/// The vertices of `m` above `z` and below `-z`.
+std::pair<std::size_t, std::size_t> vertices_above_and_below(const Mesh& m, double z)
+{
+  std::size_t above = 0, below = 0;
+  for(auto v : vertices(m)) {
+    above += m.point(v).z() > z;
+    below += m.point(v).z() < -z;
+  }
+  return {above, below};
+}
+
+/// The sizing field: s = 2 everywhere is the map 2 f, s = 1 is f itself (in R^6 too),
+/// s growing from 1 to 3 between the lower and the upper half of a sphere makes the
+/// remesh several times denser above while the lower half stays near the plain one, and
+/// a field that is not positive and finite, or a map that is not finite, is refused
+/// before any work.
+void test_sizing_field()
+{
+  const Mesh sphere = make_sphere(1.0, 5);
+  const auto vpm = get(CGAL::vertex_point, sphere);
+  const auto f = RSR::make_identity_range_map(vpm);
+  using V = Mesh::Vertex_index;
+  auto constant = [](double s) { return boost::make_function_property_map<V>([s](V) { return s; }); };
+  const auto twice = RSR::make_sized_range_map(sphere, f, constant(2.0));
+  double error = 0;
+  for(auto e : edges(sphere)) {
+    const V a = source(e, sphere), b = target(e, sphere);
+    for(int q = 0; q < 3; ++q)
+      error = (std::max)(error, std::abs((get(twice, b)[q] - get(twice, a)[q]) - 2 * (get(f, b)[q] - get(f, a)[q])));
+  }
+  CHECK(error < 1e-6);
+  const auto position_normal = RSR::make_position_normal_range_map(sphere, 1.0, 0.5);
+  const auto same = RSR::make_sized_range_map(sphere, position_normal, constant(1.0));
+  bool unchanged = true;
+  for(auto v : vertices(sphere))
+    unchanged = unchanged && get(same, v) == get(position_normal, v);
+  CHECK(unchanged);
+
+  const auto upper_half_finer =
+      boost::make_function_property_map<V>([&](V v) { return 2 + std::tanh(get(vpm, v).z() / 0.1); });
+  const auto np = RSR::parameters::grid_spacing(0.1);
+  Mesh plain, sized, sized_by_hand;
+  RSR::remesh(sphere, plain, np);
+  RSR::remesh(sphere, sized, np.sizing_field(upper_half_finer));
+  RSR::remesh(sphere, sized_by_hand, np.range_map(RSR::make_sized_range_map(sphere, f, upper_half_finer)));
+  const auto [plain_above, plain_below] = vertices_above_and_below(plain, 0.3);
+  const auto [above, below] = vertices_above_and_below(sized, 0.3);
+  std::cout << "sizing field: above/below " << plain_above << "/" << plain_below << " -> " << above << "/" << below
+            << std::endl;
+  CHECK(plain_above < 1.25 * double(plain_below) && plain_below < 1.25 * double(plain_above));
+  CHECK(double(above) > 3 * double(below));
+  CHECK(double(above) > 3 * double(plain_above));
+  CHECK(double(below) < 1.5 * double(plain_below));
+  CHECK_EQ(fingerprint(sized), fingerprint(sized_by_hand));
+  CHECK_EQ(euler_characteristic(sized), 2);
+
+  using Kind = RSR::Remeshing_error::Kind;
+  const V first = *vertices(sphere).begin();
+  for(double wrong : {0., -1., std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()}) {
+    const auto field = boost::make_function_property_map<V>([&](V v) { return v == first ? wrong : 1.; });
+    Mesh kept = plain;
+    Kind kind = Kind::CANCELLED;
+    try {
+      RSR::remesh(sphere, kept, np.sizing_field(field));
+    } catch(const RSR::Remeshing_error& e) {
+      kind = e.kind();
+    }
+    CHECK(kind == Kind::BAD_PARAMETER);
+    CHECK_EQ(fingerprint(kept), fingerprint(plain));
+  }
+  const auto not_finite = boost::make_function_property_map<V>([&](V v) {
+    auto value = get(f, v);
+    value[1] = v == first ? std::numeric_limits<double>::infinity() : value[1];
+    return value;
+  });
+  Kind kind = Kind::CANCELLED;
+  try {
+    RSR::make_sized_range_map(sphere, not_finite, constant(1.0));
+  } catch(const RSR::Remeshing_error& e) {
+    kind = e.kind();
+  }
+  CHECK(kind == Kind::BAD_INPUT);
+}
+
 int main()
 {
+  test_sizing_field();
   test_gauss_map_anisotropy();
   test_position_normal_weights();
   test_bounded_position_variation();

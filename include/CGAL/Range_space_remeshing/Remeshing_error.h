@@ -31,7 +31,8 @@ public:
     /// infinite coordinate or map value, a soup that cannot be made a mesh.
     BAD_INPUT,
     /// A parameter is out of its domain: a non-positive or non-finite cell size, a
-    /// non-finite grid origin, an impossible camera, parameters that exclude each other.
+    /// non-finite grid origin, a sizing field not positive and finite, an impossible
+    /// camera, parameters that exclude each other.
     BAD_PARAMETER,
     /// The output would exceed the cap on its vertices (`maximum_number`), or the grid
     /// is so fine that range coordinates would overflow: a larger cell size is needed.
