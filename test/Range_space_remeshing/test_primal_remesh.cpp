@@ -307,6 +307,14 @@ void test_errors()
     CHECK(throws_remeshing_error(
         [&] { RSR::primal_remesh(needle, out, params::grid_spacing(1.0).seeding_method(seeding)); },
         "grid hyperplanes, more than the cap"));
+  // of the kind a caller backs off from (a target search, a local refinement)
+  RSR::Remeshing_error::Kind needle_kind = RSR::Remeshing_error::Kind::BAD_INPUT;
+  try {
+    RSR::primal_remesh(needle, out, params::grid_spacing(1.0));
+  } catch(const RSR::Remeshing_error& e) {
+    needle_kind = e.kind();
+  }
+  CHECK(needle_kind == RSR::Remeshing_error::Kind::OUTPUT_TOO_LARGE);
   // A cap above the estimate (7,396 for 7,378 vertices) that the scan's bound reaches
   // on the way (after 2,902 vertices): the scan goes on after the estimate, to the
   // same output.

@@ -59,16 +59,17 @@ struct Lattice_overflow : Remeshing_error
   {}
 };
 
-/// Throws `Error(message())`, with the message built here, out of line: built where the
-/// input is checked, once per face, it made the checking functions too big to inline.
-template <class Error, class Message>
+/// Throws `Error(message(), more...)`, with the message built here, out of line: built
+/// where the input is checked, once per face, it made the checking functions too big to
+/// inline.
+template <class Error, class Message, class... More>
 [[noreturn]]
 #if defined(__GNUC__)
 __attribute__((noinline, cold))
 #endif
-void throw_error(const Message& message)
+void throw_error(const Message& message, const More&... more)
 {
-  throw Error(message());
+  throw Error(message(), more...);
 }
 
 #if defined(CGAL_LINKED_WITH_TBB)

@@ -54,7 +54,7 @@ public:
         return "face " + std::to_string(face_id) + " crosses " + std::to_string(hyperplanes) +
                " grid hyperplanes, more than the cap of " + std::to_string(maximum_) +
                " vertices: the cell size is too small for this input";
-      });
+      }, Remeshing_error::Kind::OUTPUT_TOO_LARGE);
   }
 
   /// Refuses an output whose `expected_number_of_vertices()` exceeds the cap, before
