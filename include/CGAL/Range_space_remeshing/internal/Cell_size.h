@@ -33,6 +33,18 @@ namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
 
+/// The corners of `faces`, a vertex once per face it is a corner of.
+template <class TriangleMesh, class FaceRange>
+std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> corners_of_faces(const TriangleMesh& tm,
+                                                                                           const FaceRange& faces)
+{
+  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> corners;
+  for(auto f : faces)
+    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
+      corners.push_back(v);
+  return corners;
+}
+
 /// The bounding box (lowest and highest coordinates) of f over `vertex_range`; empty
 /// (infinite, low above high) if there is none.
 template <int D, class RangeMap, class VertexRange>

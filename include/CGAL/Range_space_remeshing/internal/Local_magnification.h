@@ -85,8 +85,9 @@ double range_distance(const std::array<double, D>& a, const std::array<double, D
 template <int D>
 struct Lens
 {
+  // S: a place lensed in each of k rounds is 2^k times finer
+  static constexpr double magnification = 2;
   Range_ball<D> inner;
-  double magnification = 2;
 
   /// R, where r s(r) = S r0 + ring_stretch (r - r0) meets r.
   double outer_radius() const
@@ -149,7 +150,6 @@ public:
   using Map = Magnified_range_map<RangeMap, VertexIndexMap>;
   using Point = typename Map::value_type;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
-  using face_descriptor = typename boost::graph_traits<TriangleMesh>::face_descriptor;
 
   Local_magnification(const TriangleMesh& tm, const RangeMap& range_map, VertexIndexMap vertex_index)
     : tm_(tm), range_map_(range_map), vertex_index_(vertex_index)
@@ -184,12 +184,11 @@ public:
         continue;
       for(const Lens<D>& earlier : round) // where the lenses before it moved its centre
         lens.inner.center = earlier.apply(lens.inner.center);
-      apply(lens, corners_of(faces));
+      apply(lens, corners_of_faces(tm_, faces));
       round.push_back(lens);
     }
     lenses_in_last_round_ = round.size();
     lenses_ += round.size();
-    largest_ = std::pow(2., rounds_ + 1);
     ++rounds_;
     return true;
   }
@@ -220,7 +219,7 @@ public:
       return true;
     }
     if(rounds_ == 0 || defects < best_.defects) {
-      best_ = Best{moved_, rounds_, lenses_, largest_, defects};
+      best_ = Best{moved_, rounds_, lenses_, defects};
       rounds_without_progress_ = 0;
     } else {
       ++rounds_without_progress_;
@@ -237,7 +236,6 @@ public:
     moved_ = best_.moved;
     rounds_ = best_.rounds;
     lenses_ = best_.lenses;
-    largest_ = best_.largest;
     undone_ = restored_ = true;
     return true;
   }
@@ -259,7 +257,7 @@ public:
   {
     stats.local_refinements = std::size_t(rounds_);
     stats.magnified_regions = lenses_;
-    stats.largest_magnification = largest_;
+    stats.largest_magnification = std::pow(Lens<D>::magnification, rounds_);
   }
 
   /// Back to the map before the last round, the last one: its output is too large.
@@ -269,7 +267,6 @@ public:
     before_last_round_.clear();
     --rounds_;
     lenses_ -= lenses_in_last_round_;
-    largest_ = std::pow(2., rounds_);
     undone_ = true;
   }
 
@@ -279,7 +276,6 @@ public:
     moved_.clear();
     rounds_ = 0;
     lenses_ = 0;
-    largest_ = 1;
     undone_ = true; // the refinement is global from here
   }
 
@@ -299,7 +295,7 @@ private:
   template <class FaceRange>
   Range_ball<D> ball_of(const FaceRange& faces) const
   {
-    const auto box = mapped_box_of<D>(map(), corners_of(faces));
+    const auto box = mapped_box_of<D>(map(), corners_of_faces(tm_, faces));
     Range_ball<D> ball;
     ball.radius = -1;
     if(!(box[0][0] <= box[1][0]))
@@ -313,16 +309,6 @@ private:
     if(!std::isfinite(ball.radius))
       ball.radius = -1;
     return ball;
-  }
-
-  template <class FaceRange>
-  std::vector<vertex_descriptor> corners_of(const FaceRange& faces) const
-  {
-    std::vector<vertex_descriptor> corners;
-    for(face_descriptor g : faces)
-      for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(g, tm_), tm_))
-        corners.push_back(v);
-    return corners;
   }
 
   /// Moves the vertices of the surface the lens magnifies: the corners of its region's
@@ -368,13 +354,11 @@ private:
     typename Map::Moved moved;
     int rounds = 0;
     std::size_t lenses = 0;
-    double largest = 1;
     std::size_t defects = 0;
   } best_; // the run with the fewest defects
   bool restored_ = false;
   int rounds_without_progress_ = 0; // since the run with the fewest defects
   std::size_t lenses_ = 0;
-  double largest_ = 1;
 };
 
 } // namespace internal

@@ -227,11 +227,7 @@ template <class TriangleMesh, class RangeMap, class FaceRange>
 double extent_of_faces(const TriangleMesh& tm, const RangeMap& range_map, const FaceRange& faces)
 {
   constexpr int D = range_dimension<RangeMap>();
-  std::vector<typename boost::graph_traits<TriangleMesh>::vertex_descriptor> corners;
-  for(auto f : faces)
-    for(auto v : CGAL::vertices_around_face(halfedge(f, tm), tm))
-      corners.push_back(v);
-  const auto box = mapped_box_of<D>(range_map, corners);
+  const auto box = mapped_box_of<D>(range_map, corners_of_faces(tm, faces));
   double extent = 0;
   for(int q = 0; q < D; ++q)
     extent = (std::max)(extent, box[1][q] - box[0][q]);
