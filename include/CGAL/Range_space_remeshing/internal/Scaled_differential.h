@@ -43,7 +43,7 @@ namespace Range_space_remeshing {
 namespace internal {
 
 // the conjugate gradients stop when the residual is this small against b's
-constexpr double sizing_solve_tolerance = 1e-6;
+constexpr double sizing_solve_tolerance = 1e-4;
 // or after this many iterations: the solve's error only blurs the sizing
 constexpr int maximum_sizing_solve_iterations = 5000;
 
