@@ -582,7 +582,8 @@ std::pair<std::size_t, std::size_t> vertices_above_and_below(const Mesh& m, doub
   return {above, below};
 }
 
-/// The sizing field: s = 2 everywhere is the map 2 f, s = 1 is f itself (in R^6 too),
+/// The sizing field: s = 2 everywhere is the map 2 f, s = 1 is f itself (in R^6 too,
+/// and far from the origin, to the last bit), a coordinate f keeps constant stays so,
 /// s growing from 1 to 3 between the lower and the upper half of a sphere makes the
 /// remesh several times denser above while the lower half stays near the plain one, and
 /// a field that is not positive and finite, or a map that is not finite, is refused
@@ -602,6 +603,41 @@ void test_sizing_field()
       error = (std::max)(error, std::abs((get(twice, b)[q] - get(twice, a)[q]) - 2 * (get(f, b)[q] - get(f, a)[q])));
   }
   CHECK(error < 1e-6);
+  // far from the origin, a field of 1 is f and a constant one c f, to the last bit (the
+  // solve's residual once cancelled 1e5-sized coordinates: 3,000 times the edges' error)
+  Mesh far = sphere;
+  for(auto v : vertices(far))
+    far.point(v) = Point(1e5 + 1e-4 * sphere.point(v).x(), 1e-4 * sphere.point(v).y(), 1e-4 * sphere.point(v).z());
+  const auto far_f = RSR::make_identity_range_map(get(CGAL::vertex_point, far));
+  for(double c : {1., 3., 1e-200}) {
+    const auto scaled = RSR::make_sized_range_map(far, far_f, constant(c));
+    bool exact = true;
+    for(auto v : vertices(far))
+      for(int q = 0; q < 3; ++q)
+        exact = exact && get(scaled, v)[q] == c * get(far_f, v)[q];
+    CHECK(exact);
+  }
+  // a plane at an inexact height with a field of two values: g stays one plane
+  Mesh plane;
+  const int n = 30;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+      plane.add_vertex(Point(512345.678 + i, 4612345.678 + j, 100.1));
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i) {
+      const auto corner = [&](int x, int y) { return V(Mesh::size_type(y * (n + 1) + x)); };
+      const V a = corner(i, j), b = corner(i + 1, j), c = corner(i, j + 1), d = corner(i + 1, j + 1);
+      plane.add_face(a, b, d);
+      plane.add_face(a, d, c);
+    }
+  const auto plane_f = RSR::make_identity_range_map(get(CGAL::vertex_point, plane));
+  const auto halves = boost::make_function_property_map<V>([&](V v) { return plane.point(v).x() < 512360 ? 1. : 2.; });
+  const auto plane_g = RSR::make_sized_range_map(plane, plane_f, halves);
+  bool flat = true;
+  for(auto v : vertices(plane))
+    flat = flat && get(plane_g, v)[2] == get(plane_g, *vertices(plane).begin())[2];
+  CHECK(flat);
+
   const auto position_normal = RSR::make_position_normal_range_map(sphere, 1.0, 0.5);
   const auto same = RSR::make_sized_range_map(sphere, position_normal, constant(1.0));
   bool unchanged = true;
@@ -641,6 +677,15 @@ void test_sizing_field()
     CHECK(kind == Kind::BAD_PARAMETER);
     CHECK_EQ(fingerprint(kept), fingerprint(plain));
   }
+  // values too far apart for the weights 1 / s^2 to stay doubles
+  const auto too_wide = boost::make_function_property_map<V>([&](V v) { return v == first ? 1e-13 : 1.; });
+  Kind wide_kind = Kind::CANCELLED;
+  try {
+    RSR::make_sized_range_map(sphere, f, too_wide);
+  } catch(const RSR::Remeshing_error& e) {
+    wide_kind = e.kind();
+  }
+  CHECK(wide_kind == Kind::BAD_PARAMETER);
   const auto not_finite = boost::make_function_property_map<V>([&](V v) {
     auto value = get(f, v);
     value[1] = v == first ? std::numeric_limits<double>::infinity() : value[1];

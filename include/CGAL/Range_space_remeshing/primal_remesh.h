@@ -43,21 +43,24 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out, const Na
     throw Remeshing_error("the input mesh has no face");
   const Progress progress = progress_of(np_in);
   const std::size_t target = target_vertices_of(np_in);
-  remove_all_elements(out);
-  return emptied_on_cancel(out, [&] {
-    const double h = cell_size_of(tm, np_in);
-    if(target == 0)
-      return primal_remesh_at(h, tm, out, np_in, np_out, inspect, progress, tag);
-    Statistics stats;
-    bool refine_around_defects = true;
-    search_then_refine_around_defects(h, target, refine_around_defects, [&](double h_try) {
-      remove_all_elements(out);
-      stats = primal_remesh_at(h_try, tm, out, np_in, np_out, inspect, progress, tag, Parallel_edges::SPLIT,
-                               refine_around_defects);
-      return stats.output_vertices;
-    }, [&] { return stats.topology_checked && !stats.topology_preserved(); },
-    CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np_in, internal_np::preserve_topology), false));
-    return stats;
+  primal_run_options(np_in); // its refusals before the sizing field's solve
+  return with_sizing_field(tm, np_in, [&](const auto& np) {
+    remove_all_elements(out);
+    return emptied_on_cancel(out, [&] {
+      const double h = cell_size_of(tm, np);
+      if(target == 0)
+        return primal_remesh_at(h, tm, out, np, np_out, inspect, progress, tag);
+      Statistics stats;
+      bool refine_around_defects = true;
+      search_then_refine_around_defects(h, target, refine_around_defects, [&](double h_try) {
+        remove_all_elements(out);
+        stats = primal_remesh_at(h_try, tm, out, np, np_out, inspect, progress, tag, Parallel_edges::SPLIT,
+                                 refine_around_defects);
+        return stats.output_vertices;
+      }, [&] { return stats.topology_checked && !stats.topology_preserved(); },
+      CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::preserve_topology), false));
+      return stats;
+    });
   });
 }
 
@@ -110,10 +113,12 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
                             f is replaced by its `Sized_range_map`, whose differential is s df
                             in the least-squares sense; the cell size and the grid origin are
                             in its units}
-      \cgalParamType{a readable property map, vertex -> positive finite double}
+      \cgalParamType{a readable property map, vertex -> positive finite double, its largest
+                     value at most 10^12 times its smallest}
       \cgalParamDefault{none: the scale 1 everywhere}
-      \cgalParamExtra{computed before the run, by a sparse solve over all the input's vertices
-                      (also in the seeded mode), which no visitor can cancel}
+      \cgalParamExtra{computed after the other parameters are checked and before `out` is
+                      touched, by a sparse solve over all the input's vertices (also in the
+                      seeded mode), which no visitor can cancel}
     \cgalParamNEnd
     \cgalParamNBegin{grid_spacing}
       \cgalParamDescription{the cell size h of the grid, in units of f}
@@ -298,9 +303,7 @@ Statistics primal_remesh(const TriangleMesh& tm, PolygonMesh& out,
     internal::refuse_range_map<typename internal::Range_map_of<TriangleMesh, NamedParametersIn>::type>();
     return Statistics();
   } else
-    return internal::with_sizing_field(tm, np_in, [&](const auto& np) {
-      return internal::primal_remesh_impl(tm, out, np, np_out, internal::No_inspection(), ConcurrencyTag());
-    });
+    return internal::primal_remesh_impl(tm, out, np_in, np_out, internal::No_inspection(), ConcurrencyTag());
 }
 
 } // namespace Range_space_remeshing

@@ -271,33 +271,36 @@ void check_vertex_attributes(const TriangleMesh& tm, const NamedParameters& np, 
 
 /// The body of `remesh()`.
 template <class ConcurrencyTag, class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
-Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const NamedParameters& np,
+Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const NamedParameters& np_in,
                               const NamedParametersOut& np_out)
 {
   refuse_same_mesh(tm, quads, "remesh()");
   if(num_faces(tm) == 0)
     throw Remeshing_error("the input mesh has no face");
-  const Progress progress = progress_of(np);
-  const std::size_t target = target_vertices_of(np);
-  Quad_improvement improvement = quad_improvement_of(np); // refused before the first run
+  const Progress progress = progress_of(np_in);
+  const std::size_t target = target_vertices_of(np_in);
+  Quad_improvement improvement = quad_improvement_of(np_in); // refused before the first run
   improvement.untangle_near_target = target;
-  check_vertex_attributes(tm, np, np_out);
-  remove_all_elements(quads);
-  return emptied_on_cancel(quads, [&] {
-    const double h = cell_size_of(tm, np);
-    Remesh_statistics stats;
-    if(target == 0)
-      stats = remesh_keeping_topology<ConcurrencyTag>(h, tm, quads, np, np_out, improvement, progress);
-    else
-      search_then_refine_around_defects(h, target, improvement.refine_around_defects, [&](double h_try) {
-        remove_all_elements(quads);
-        stats = remesh_keeping_topology<ConcurrencyTag>(h_try, tm, quads, np, np_out, improvement, progress);
-        return std::size_t(num_vertices(quads));
-      }, [&] { return stats.primal.topology_checked && !stats.primal.topology_preserved(); },
-      CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::preserve_topology), false));
-    stats.time_attributes_ms = sample_vertex_attributes(tm, quads, np, np_out, progress);
-    stats.time_total_ms += stats.time_attributes_ms;
-    return stats;
+  check_vertex_attributes(tm, np_in, np_out);
+  primal_run_options(np_in); // its refusals before the sizing field's solve
+  return with_sizing_field(tm, np_in, [&](const auto& np) {
+    remove_all_elements(quads);
+    return emptied_on_cancel(quads, [&] {
+      const double h = cell_size_of(tm, np);
+      Remesh_statistics stats;
+      if(target == 0)
+        stats = remesh_keeping_topology<ConcurrencyTag>(h, tm, quads, np, np_out, improvement, progress);
+      else
+        search_then_refine_around_defects(h, target, improvement.refine_around_defects, [&](double h_try) {
+          remove_all_elements(quads);
+          stats = remesh_keeping_topology<ConcurrencyTag>(h_try, tm, quads, np, np_out, improvement, progress);
+          return std::size_t(num_vertices(quads));
+        }, [&] { return stats.primal.topology_checked && !stats.primal.topology_preserved(); },
+        CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::preserve_topology), false));
+      stats.time_attributes_ms = sample_vertex_attributes(tm, quads, np, np_out, progress);
+      stats.time_total_ms += stats.time_attributes_ms;
+      return stats;
+    });
   });
 }
 

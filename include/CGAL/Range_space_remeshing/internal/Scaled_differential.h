@@ -15,15 +15,23 @@
 //   minimise  sum over the edges ij of  |(g_j - g_i) - s_ij (f_j - f_i)|^2 / s_ij^2,
 //   s_ij = (s_i + s_j) / 2.
 //
-// Measured against the plain sum, the relative one leaves the coarse parts closer to f
-// and the fine ones closer to s f: the error a closed surface forces goes where cells
-// are small. The normal equations are L g = b, L the Laplacian of the edge graph with
-// weights w_ij = 1 / s_ij^2, and b_i = sum over the neighbours j of w_ij s_ij (f_i - f_j).
-// Each coordinate is solved on its own by conjugate gradients preconditioned by L's
-// diagonal, from g = f. L is singular (translations of each connected component), but
-// b sums to zero over each component, so the system is consistent and the iteration
-// converges. Any g gives a valid remesh (each face in one cell of g): the solve's
-// accuracy only sets how closely the cells follow s.
+// Against the plain sum, the relative one keeps the coarse parts at their size: the
+// stretch a closed surface cannot take (a part cannot grow alone) is left short in the
+// fine parts, which reach a fraction of s, rather than spread over the rest.
+//
+// g is linear in s and the minimiser does not change when s is multiplied by a
+// constant, so the solve runs with s divided by its median m, and g is m times its
+// result: a constant field is then solved exactly, with no iteration. The unknown is
+// the displacement d = g / m - f, from 0, with the right-hand side read off the edges,
+// b_i = sum over the neighbours j of w_ij (s_ij - 1) (f_i - f_j): where s is m it is 0
+// exactly, and no cancellation of large coordinates (a scan in georeferenced units)
+// enters the residual. L d = b, L the Laplacian of the edge graph with weights
+// w_ij = 1 / s_ij^2, is solved for each coordinate by conjugate gradients
+// preconditioned by L's diagonal. L is singular (translations of each connected
+// component); b sums to zero over each, so the system is consistent. Any g gives a
+// valid remesh (each face in one cell of g): the solve's accuracy only sets how
+// closely the cells follow s, and it stops at a residual of sizing_solve_tolerance
+// times b's, or after maximum_sizing_solve_iterations.
 //
 // The solver is hand-written: the library depends on CGAL, Boost, GMP and MPFR only,
 // and CGAL's sparse solvers need Eigen.
@@ -111,13 +119,13 @@ inline double dot(const std::vector<double>& a, const std::vector<double>& b)
   return sum;
 }
 
-/// Solves L g = b for one coordinate by conjugate gradients preconditioned by L's
-/// diagonal, from g.
-inline void solve_scaled_coordinate(const Scaled_edge_graph& graph, const std::vector<double>& b, std::vector<double>& g)
+/// Solves L d = b for one coordinate by conjugate gradients preconditioned by L's
+/// diagonal, from d.
+inline void solve_scaled_coordinate(const Scaled_edge_graph& graph, const std::vector<double>& b, std::vector<double>& d)
 {
   const std::size_t n = graph.size();
   std::vector<double> r(n), z(n), p(n), lp(n);
-  graph.multiply(g, lp);
+  graph.multiply(d, lp);
   for(std::size_t i = 0; i < n; ++i)
     r[i] = b[i] - lp[i];
   const double goal = sizing_solve_tolerance * std::sqrt(dot(b, b));
@@ -137,7 +145,7 @@ inline void solve_scaled_coordinate(const Scaled_edge_graph& graph, const std::v
       return; // p in L's kernel: nothing left to reduce
     const double alpha = rz / curvature;
     for(std::size_t i = 0; i < n; ++i) {
-      g[i] += alpha * p[i];
+      d[i] += alpha * p[i];
       r[i] -= alpha * lp[i];
     }
     precondition();
@@ -149,7 +157,8 @@ inline void solve_scaled_coordinate(const Scaled_edge_graph& graph, const std::v
   }
 }
 
-/// g for the values `f` and the scales `sizing` of n vertices joined by `edges`.
+/// g for the values `f` and the scales `sizing` (already divided by their median) of n
+/// vertices joined by `edges`, divided by that median.
 template <int D>
 std::vector<std::array<double, D>> scaled_differential(const std::vector<std::array<double, D>>& f,
                                                        const std::vector<double>& sizing,
@@ -158,18 +167,18 @@ std::vector<std::array<double, D>> scaled_differential(const std::vector<std::ar
   const std::size_t n = f.size();
   const Scaled_edge_graph graph = scaled_edge_graph(n, edges, sizing);
   std::vector<std::array<double, D>> g(f);
-  std::vector<double> b(n), column(n);
+  std::vector<double> b(n), displacement(n);
   for(int q = 0; q < D; ++q) {
     for(std::size_t i = 0; i < n; ++i) {
       double sum = 0;
       for(std::size_t k = graph.first[i]; k < graph.first[i + 1]; ++k)
-        sum += graph.weight[k] * graph.scale[k] * (f[i][q] - f[graph.neighbour[k]][q]);
+        sum += graph.weight[k] * (graph.scale[k] - 1) * (f[i][q] - f[graph.neighbour[k]][q]);
       b[i] = sum;
-      column[i] = f[i][q];
     }
-    solve_scaled_coordinate(graph, b, column);
+    std::fill(displacement.begin(), displacement.end(), 0.);
+    solve_scaled_coordinate(graph, b, displacement);
     for(std::size_t i = 0; i < n; ++i)
-      g[i][q] = column[i];
+      g[i][q] += displacement[i];
   }
   return g;
 }
