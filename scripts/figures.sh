@@ -92,13 +92,13 @@ render "$holes" input_elephant_with_holes.png
 remesh holes "$holes" --cell-size 0.01
 render "$work/holes.off" dual_elephant_with_holes.png
 # topology (the manual's section on it): the elephant at cells of 10 % of the
-# diagonal, the input faces the check flags (red), the primal there, and the primal
-# with --preserve-topology
-remesh topology_coarse "$elephant" --output primal --cell-size 0.1 --topology-report "$work/topology_flagged.off" 2> /dev/null
+# diagonal, the input faces the check flags (red), the primal there with
+# --allow-topology-change, and the primal by default (refined around the defects)
+remesh topology_coarse "$elephant" --output primal --cell-size 0.1 --allow-topology-change --topology-report "$work/topology_flagged.off" 2> /dev/null
 python3 scripts/colour_flagged_faces.py "$elephant" "$work/topology_flagged.off" "$work/topology_flagged.ply"
 render "$work/topology_flagged.ply" topology_elephant_flagged.png --scalars --cells --comp=-2
 render "$work/topology_coarse.off" topology_elephant_coarse.png
-remesh topology_preserved "$elephant" --output primal --cell-size 0.1 --preserve-topology
+remesh topology_preserved "$elephant" --output primal --cell-size 0.1
 render "$work/topology_preserved.off" topology_elephant_preserved.png
 # the same section: CGAL's man at a quarter of its vertices, from behind, with
 # --allow-topology-change (two small pieces come off at a hand: 3

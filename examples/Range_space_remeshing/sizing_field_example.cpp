@@ -1,9 +1,11 @@
-// A sizing field: the remesh finer where the user asks. The field here is 4 within a
-// ball around the input's highest vertex, falling smoothly to 1 away from it: the map's
-// cells there are a quarter as large, and the remesh about four times finer in each
-// direction. The field is any readable property map vertex -> positive double (a
-// curvature, a distance to a feature, a user-painted scalar); the map may be any range
-// map, here the identity.
+// A sizing field: the remesh finer where the user asks. The field here is 4 at the
+// input's highest vertex, falling smoothly to 1 about a fifth of the diagonal away (2.1
+// at that distance): the map's cells there are up to a quarter as large, and the remesh
+// up to four times finer in each direction. Larger means finer (not a target edge
+// length, as in CGAL's isotropic remeshing). The field is any readable property map
+// vertex -> positive double (a curvature, a distance to a feature, a user-painted
+// scalar); the map may be any range map, here the identity. `sizing_field` comes with
+// remesh.h; Sized_range_map.h has the map it makes, for use as a range_map.
 #include <CGAL/Range_space_remeshing/remesh.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
