@@ -587,7 +587,7 @@ std::pair<std::size_t, std::size_t> vertices_above_and_below(const Mesh& m, doub
 /// s growing from 1 to 3 between the lower and the upper half of a sphere makes the
 /// remesh several times denser above while the lower half stays near the plain one, and
 /// a field that is not positive and finite, or a map that is not finite, is refused
-/// before any work.
+/// before any work; the progress visitor may stop the solve.
 void test_sizing_field()
 {
   const Mesh sphere = make_sphere(1.0, 5);
@@ -677,6 +677,27 @@ void test_sizing_field()
     CHECK(kind == Kind::BAD_PARAMETER);
     CHECK_EQ(fingerprint(kept), fingerprint(plain));
   }
+  // the visitor hears of the solve and may stop it: the output is then left empty
+  std::vector<RSR::Remeshing_stage> heard;
+  auto stop = [&](RSR::Remeshing_stage stage, double) {
+    heard.push_back(stage);
+    return false;
+  };
+  bool stopped = false;
+  try {
+    RSR::make_sized_range_map(sphere, f, upper_half_finer, RSR::parameters::progress_visitor(stop));
+  } catch(const RSR::Remeshing_cancelled&) {
+    stopped = true;
+  }
+  CHECK(stopped && heard.size() == 1 && heard[0] == RSR::Remeshing_stage::SCAN);
+  Mesh emptied = plain;
+  stopped = false;
+  try {
+    RSR::remesh(sphere, emptied, np.sizing_field(upper_half_finer).progress_visitor(stop));
+  } catch(const RSR::Remeshing_cancelled&) {
+    stopped = true;
+  }
+  CHECK(stopped && num_vertices(emptied) == 0);
   // values too far apart for the weights 1 / s^2 to stay doubles
   const auto too_wide = boost::make_function_property_map<V>([&](V v) { return v == first ? 1e-13 : 1.; });
   Kind wide_kind = Kind::CANCELLED;

@@ -117,12 +117,13 @@ vertices of `tm`.
         double, or convertible to one).
 
 \param np optional named parameters: `vertex_index_map` (default: the mesh's, made if
-  it has none).
+  it has none); `progress_visitor` (as for `primal_remesh()`: called during the solve
+  with `Remeshing_stage::SCAN` and 0, it may stop it).
 
 \throws Remeshing_error of kind `BAD_PARAMETER` if a value of `sizing_field` is not
   positive and finite, if its largest value is more than 10^12 times its smallest, or
   if it scales f out of the doubles' range; of kind `BAD_INPUT` if a value of
-  `range_map` is not finite.
+  `range_map` is not finite; `Remeshing_cancelled` when the visitor asks to stop.
 */
 template <class TriangleMesh, class RangeMap, class SizingField,
           class NamedParameters = CGAL::parameters::Default_named_parameters>
@@ -173,7 +174,7 @@ auto make_sized_range_map(const TriangleMesh& tm, const RangeMap& range_map, con
   edge_list.reserve(num_edges(tm));
   for(auto e : edges(tm))
     edge_list.emplace_back(std::size_t(get(index, source(e, tm))), std::size_t(get(index, target(e, tm))));
-  std::vector<Value> g = internal::scaled_differential<D>(f, s, edge_list);
+  std::vector<Value> g = internal::scaled_differential<D>(f, s, edge_list, internal::progress_of(np));
   for(auto& value : g)
     for(double& x : value) {
       x *= median;
@@ -195,8 +196,10 @@ struct Sizing_field_applied
 /// it (the named parameters `range_map`, then `sizing_field` as `Sizing_field_applied`,
 /// added last: the ones `get_parameter()` finds), so that a stage that runs another
 /// public function's body with the pack (remesh() runs primal_remesh()'s) solves once.
-template <class TriangleMesh, class NamedParameters, class Run>
-decltype(auto) with_sizing_field(const TriangleMesh& tm, const NamedParameters& np, const Run& run)
+/// `cancelled()` is called where the visitor stops the solve.
+template <class TriangleMesh, class NamedParameters, class Cancelled, class Run>
+decltype(auto) with_sizing_field(const TriangleMesh& tm, const NamedParameters& np, const Cancelled& cancelled,
+                                 const Run& run)
 {
   using Sizing_field = typename CGAL::internal_np::Lookup_named_param_def<internal_np::sizing_field_t, NamedParameters,
                                                                           CGAL::internal_np::Param_not_found>::type;
@@ -204,8 +207,15 @@ decltype(auto) with_sizing_field(const TriangleMesh& tm, const NamedParameters& 
                std::is_same<Sizing_field, Sizing_field_applied>::value) {
     return run(np);
   } else {
-    auto sized = make_sized_range_map(tm, range_map_of(tm, np),
-                                      CGAL::parameters::get_parameter(np, internal_np::sizing_field), np);
+    auto sized = [&] {
+      try {
+        return make_sized_range_map(tm, range_map_of(tm, np),
+                                    CGAL::parameters::get_parameter(np, internal_np::sizing_field), np);
+      } catch(const Remeshing_cancelled&) {
+        cancelled();
+        throw;
+      }
+    }();
     using With_map = parameters::Named_function_parameters<decltype(sized), internal_np::range_map_t, NamedParameters>;
     return run(parameters::Named_function_parameters<Sizing_field_applied, internal_np::sizing_field_t, With_map>(
         Sizing_field_applied(), With_map(sized, np)));

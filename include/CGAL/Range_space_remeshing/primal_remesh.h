@@ -44,7 +44,7 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out, const Na
   const Progress progress = progress_of(np_in);
   const std::size_t target = target_vertices_of(np_in);
   primal_run_options(np_in); // its refusals before the sizing field's solve
-  return with_sizing_field(tm, np_in, [&](const auto& np) {
+  return with_sizing_field(tm, np_in, [&] { remove_all_elements(out); }, [&](const auto& np) {
     remove_all_elements(out);
     return emptied_on_cancel(out, [&] {
       const double h = cell_size_of(tm, np);
@@ -118,7 +118,7 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
       \cgalParamDefault{none: the scale 1 everywhere}
       \cgalParamExtra{computed after the other parameters are checked and before `out` is
                       touched, by a sparse solve over all the input's vertices (also in the
-                      seeded mode), which no visitor can cancel}
+                      seeded mode), reported to the visitor as the start of the scan}
     \cgalParamNEnd
     \cgalParamNBegin{grid_spacing}
       \cgalParamDescription{the cell size h of the grid, in units of f}

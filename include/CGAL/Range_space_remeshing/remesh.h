@@ -283,7 +283,7 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
   improvement.untangle_near_target = target;
   check_vertex_attributes(tm, np_in, np_out);
   primal_run_options(np_in); // its refusals before the sizing field's solve
-  return with_sizing_field(tm, np_in, [&](const auto& np) {
+  return with_sizing_field(tm, np_in, [&] { remove_all_elements(quads); }, [&](const auto& np) {
     remove_all_elements(quads);
     return emptied_on_cancel(quads, [&] {
       const double h = cell_size_of(tm, np);
@@ -453,9 +453,7 @@ Remesh_statistics remesh(const TriangleMesh& tm, QuadMesh& quads,
     internal::refuse_range_map<typename internal::Range_map_of<TriangleMesh, NamedParameters>::type>();
     return Remesh_statistics();
   } else
-    return internal::with_sizing_field(tm, np, [&](const auto& sized_np) {
-      return internal::remesh_impl<ConcurrencyTag>(tm, quads, sized_np, np_out);
-    });
+    return internal::remesh_impl<ConcurrencyTag>(tm, quads, np, np_out);
 }
 
 } // namespace Range_space_remeshing

@@ -37,6 +37,8 @@
 // and CGAL's sparse solvers need Eigen.
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/Remeshing_stage.h>
+#include <CGAL/Range_space_remeshing/internal/Progress.h>
 
 #include <algorithm>
 #include <array>
@@ -120,8 +122,10 @@ inline double dot(const std::vector<double>& a, const std::vector<double>& b)
 }
 
 /// Solves L d = b for one coordinate by conjugate gradients preconditioned by L's
-/// diagonal, from d.
-inline void solve_scaled_coordinate(const Scaled_edge_graph& graph, const std::vector<double>& b, std::vector<double>& d)
+/// diagonal, from d. The visitor hears of each iteration as the start of the scan (the
+/// map is made before the grid is met), and may stop it.
+inline void solve_scaled_coordinate(const Scaled_edge_graph& graph, const std::vector<double>& b, std::vector<double>& d,
+                                    const Progress& progress)
 {
   const std::size_t n = graph.size();
   std::vector<double> r(n), z(n), p(n), lp(n);
@@ -137,6 +141,7 @@ inline void solve_scaled_coordinate(const Scaled_edge_graph& graph, const std::v
   p = z;
   double rz = dot(r, z);
   for(int iteration = 0; iteration < maximum_sizing_solve_iterations; ++iteration) {
+    progress.report(Remeshing_stage::SCAN, 0.);
     if(!(std::sqrt(dot(r, r)) > goal))
       return;
     graph.multiply(p, lp);
@@ -162,7 +167,8 @@ inline void solve_scaled_coordinate(const Scaled_edge_graph& graph, const std::v
 template <int D>
 std::vector<std::array<double, D>> scaled_differential(const std::vector<std::array<double, D>>& f,
                                                        const std::vector<double>& sizing,
-                                                       const std::vector<std::pair<std::size_t, std::size_t>>& edges)
+                                                       const std::vector<std::pair<std::size_t, std::size_t>>& edges,
+                                                       const Progress& progress)
 {
   const std::size_t n = f.size();
   const Scaled_edge_graph graph = scaled_edge_graph(n, edges, sizing);
@@ -176,7 +182,7 @@ std::vector<std::array<double, D>> scaled_differential(const std::vector<std::ar
       b[i] = sum;
     }
     std::fill(displacement.begin(), displacement.end(), 0.);
-    solve_scaled_coordinate(graph, b, displacement);
+    solve_scaled_coordinate(graph, b, displacement, progress);
     for(std::size_t i = 0; i < n; ++i)
       g[i][q] += displacement[i];
   }
