@@ -116,6 +116,9 @@ vertices of `tm`.
 \tparam SizingField a readable property map, vertex -> a positive finite number (a
         double, or convertible to one).
 
+\param tm the input mesh the remesh will read.
+\param range_map the map f, vertex -> `std::array<double, D>`.
+\param sizing_field the scale s of f at each vertex of `tm`.
 \param np optional named parameters: `vertex_index_map` (default: the mesh's, made if
   it has none); `progress_visitor` (as for `primal_remesh()`: called during the solve
   with `Remeshing_stage::SCAN` and 0, it may stop it).
