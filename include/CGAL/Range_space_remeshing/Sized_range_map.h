@@ -199,10 +199,8 @@ struct Sizing_field_applied
 /// it (the named parameters `range_map`, then `sizing_field` as `Sizing_field_applied`,
 /// added last: the ones `get_parameter()` finds), so that a stage that runs another
 /// public function's body with the pack (remesh() runs primal_remesh()'s) solves once.
-/// `cancelled()` is called where the visitor stops the solve.
-template <class TriangleMesh, class NamedParameters, class Cancelled, class Run>
-decltype(auto) with_sizing_field(const TriangleMesh& tm, const NamedParameters& np, const Cancelled& cancelled,
-                                 const Run& run)
+template <class TriangleMesh, class NamedParameters, class Run>
+decltype(auto) with_sizing_field(const TriangleMesh& tm, const NamedParameters& np, const Run& run)
 {
   using Sizing_field = typename CGAL::internal_np::Lookup_named_param_def<internal_np::sizing_field_t, NamedParameters,
                                                                           CGAL::internal_np::Param_not_found>::type;
@@ -210,15 +208,8 @@ decltype(auto) with_sizing_field(const TriangleMesh& tm, const NamedParameters& 
                std::is_same<Sizing_field, Sizing_field_applied>::value) {
     return run(np);
   } else {
-    auto sized = [&] {
-      try {
-        return make_sized_range_map(tm, range_map_of(tm, np),
-                                    CGAL::parameters::get_parameter(np, internal_np::sizing_field), np);
-      } catch(const Remeshing_cancelled&) {
-        cancelled();
-        throw;
-      }
-    }();
+    const auto sized = make_sized_range_map(tm, range_map_of(tm, np),
+                                            CGAL::parameters::get_parameter(np, internal_np::sizing_field), np);
     using With_map = parameters::Named_function_parameters<decltype(sized), internal_np::range_map_t, NamedParameters>;
     return run(parameters::Named_function_parameters<Sizing_field_applied, internal_np::sizing_field_t, With_map>(
         Sizing_field_applied(), With_map(sized, np)));

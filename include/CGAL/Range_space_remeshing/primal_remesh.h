@@ -44,9 +44,9 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out, const Na
   const Progress progress = progress_of(np_in);
   const std::size_t target = target_vertices_of(np_in);
   primal_run_options(np_in); // its refusals before the sizing field's solve
-  return with_sizing_field(tm, np_in, [&] { remove_all_elements(out); }, [&](const auto& np) {
-    remove_all_elements(out);
-    return emptied_on_cancel(out, [&] {
+  return emptied_on_cancel(out, [&] {
+    return with_sizing_field(tm, np_in, [&](const auto& np) {
+      remove_all_elements(out);
       const double h = cell_size_of(tm, np);
       if(target == 0)
         return primal_remesh_at(h, tm, out, np, np_out, inspect, progress, tag);

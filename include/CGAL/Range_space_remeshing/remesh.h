@@ -283,9 +283,9 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
   improvement.untangle_near_target = target;
   check_vertex_attributes(tm, np_in, np_out);
   primal_run_options(np_in); // its refusals before the sizing field's solve
-  return with_sizing_field(tm, np_in, [&] { remove_all_elements(quads); }, [&](const auto& np) {
-    remove_all_elements(quads);
-    return emptied_on_cancel(quads, [&] {
+  return emptied_on_cancel(quads, [&] {
+    return with_sizing_field(tm, np_in, [&](const auto& np) {
+      remove_all_elements(quads);
       const double h = cell_size_of(tm, np);
       Remesh_statistics stats;
       if(target == 0)

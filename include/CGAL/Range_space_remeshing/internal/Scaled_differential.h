@@ -57,13 +57,19 @@ constexpr double sizing_solve_tolerance = 1e-4;
 // or after this many iterations: the solve's error only blurs the sizing
 constexpr int maximum_sizing_solve_iterations = 5000;
 
-/// The edges of the input as adjacency lists (compressed rows), with the scale s_ij
-/// and the weight w_ij of each, and L's diagonal.
+/// s_ij, the scale asked of the edge ij.
+inline double edge_scale(const std::vector<double>& sizing, std::size_t i, std::size_t j)
+{
+  return 0.5 * (sizing[i] + sizing[j]);
+}
+
+/// The edges of the input as adjacency lists (compressed rows), with the weight
+/// w_ij = 1 / s_ij^2 of each, and L's diagonal.
 struct Scaled_edge_graph
 {
   std::vector<std::size_t> first; // neighbours of i: first[i] .. first[i + 1]
   std::vector<std::size_t> neighbour;
-  std::vector<double> scale, weight;
+  std::vector<double> weight;
   std::vector<double> diagonal; // sum of the weights at i
 
   std::size_t size() const { return diagonal.size(); }
@@ -95,17 +101,15 @@ inline Scaled_edge_graph scaled_edge_graph(std::size_t n, const std::vector<std:
   for(std::size_t i = 0; i < n; ++i)
     graph.first[i + 1] += graph.first[i];
   graph.neighbour.resize(graph.first[n]);
-  graph.scale.resize(graph.first[n]);
   graph.weight.resize(graph.first[n]);
   graph.diagonal.assign(n, 0.);
   std::vector<std::size_t> next(graph.first.begin(), graph.first.end() - 1);
   for(const auto& [i, j] : edges)
     if(i != j) {
-      const double s = 0.5 * (sizing[i] + sizing[j]);
+      const double s = edge_scale(sizing, i, j);
       const double w = 1 / (s * s);
       for(const auto& [from, to] : {std::make_pair(i, j), std::make_pair(j, i)}) {
         graph.neighbour[next[from]] = to;
-        graph.scale[next[from]] = s;
         graph.weight[next[from]++] = w;
         graph.diagonal[from] += w;
       }
@@ -177,8 +181,10 @@ std::vector<std::array<double, D>> scaled_differential(const std::vector<std::ar
   for(int q = 0; q < D; ++q) {
     for(std::size_t i = 0; i < n; ++i) {
       double sum = 0;
-      for(std::size_t k = graph.first[i]; k < graph.first[i + 1]; ++k)
-        sum += graph.weight[k] * (graph.scale[k] - 1) * (f[i][q] - f[graph.neighbour[k]][q]);
+      for(std::size_t k = graph.first[i]; k < graph.first[i + 1]; ++k) {
+        const std::size_t j = graph.neighbour[k];
+        sum += graph.weight[k] * (edge_scale(sizing, i, j) - 1) * (f[i][q] - f[j][q]);
+      }
       b[i] = sum;
     }
     std::fill(displacement.begin(), displacement.end(), 0.);
