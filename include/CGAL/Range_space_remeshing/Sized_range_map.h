@@ -46,7 +46,7 @@ closed surface cannot grow in one part alone). Each output face still lies in on
 of g: the bound on f it implies is the cell size divided by g's local scale.
 
 The values are computed once, when the map is made (a sparse linear solve over the
-input's vertices, whose iterations grow with their number), and shared by the copies;
+input's vertices, in time linear in their number), and shared by the copies;
 the map reads them by vertex index, for the vertices of the mesh it was made of.
 Named parameter `sizing_field` of `primal_remesh()` and `remesh()` makes this map of
 their range map.

@@ -27,7 +27,8 @@
 // exactly, and no cancellation of large coordinates (a scan in georeferenced units)
 // enters the residual. L d = b, L the Laplacian of the edge graph with weights
 // w_ij = 1 / s_ij^2, is solved for each coordinate by conjugate gradients
-// preconditioned by L's diagonal. L is singular (translations of each connected
+// preconditioned by a multigrid cycle (Aggregation_multigrid.h), whose iterations do
+// not grow with the mesh as those of a diagonal preconditioner do. L is singular (translations of each connected
 // component); b sums to zero over each, so the system is consistent. Any g gives a
 // valid remesh (each face in one cell of g): the solve's accuracy only sets how
 // closely the cells follow s, and it stops at a residual of sizing_solve_tolerance
@@ -38,6 +39,7 @@
 
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
 #include <CGAL/Range_space_remeshing/Remeshing_stage.h>
+#include <CGAL/Range_space_remeshing/internal/Aggregation_multigrid.h>
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
 
 #include <algorithm>
@@ -54,8 +56,9 @@ namespace internal {
 
 // the conjugate gradients stop when the residual is this small against b's
 constexpr double sizing_solve_tolerance = 1e-4;
-// or after this many iterations: the solve's error only blurs the sizing
-constexpr int maximum_sizing_solve_iterations = 5000;
+// or after this many iterations (far more than the preconditioned solve needs): the
+// solve's error only blurs the sizing
+constexpr int maximum_sizing_solve_iterations = 500;
 
 /// s_ij, the scale asked of the edge ij.
 inline double edge_scale(const std::vector<double>& sizing, std::size_t i, std::size_t j)
@@ -63,35 +66,13 @@ inline double edge_scale(const std::vector<double>& sizing, std::size_t i, std::
   return 0.5 * (sizing[i] + sizing[j]);
 }
 
-/// The edges of the input as adjacency lists (compressed rows), with the weight
-/// w_ij = 1 / s_ij^2 of each, and L's diagonal.
-struct Scaled_edge_graph
-{
-  std::vector<std::size_t> first; // neighbours of i: first[i] .. first[i + 1]
-  std::vector<std::size_t> neighbour;
-  std::vector<double> weight;
-  std::vector<double> diagonal; // sum of the weights at i
-
-  std::size_t size() const { return diagonal.size(); }
-
-  /// y = L x
-  void multiply(const std::vector<double>& x, std::vector<double>& y) const
-  {
-    for(std::size_t i = 0; i < size(); ++i) {
-      double sum = diagonal[i] * x[i];
-      for(std::size_t k = first[i]; k < first[i + 1]; ++k)
-        sum -= weight[k] * x[neighbour[k]];
-      y[i] = sum;
-    }
-  }
-};
-
-/// The graph of `edges` (pairs of vertex indices below n; loops skipped, a repeated
-/// edge counted as often as it comes), with s_ij from the per-vertex `sizing`.
-inline Scaled_edge_graph scaled_edge_graph(std::size_t n, const std::vector<std::pair<std::size_t, std::size_t>>& edges,
+/// The Laplacian of the graph of `edges` (pairs of vertex indices below n; loops
+/// skipped, a repeated edge counted as often as it comes) with the weights
+/// w_ij = 1 / s_ij^2, s_ij from the per-vertex `sizing`.
+inline Graph_laplacian scaled_edge_graph(std::size_t n, const std::vector<std::pair<std::size_t, std::size_t>>& edges,
                                            const std::vector<double>& sizing)
 {
-  Scaled_edge_graph graph;
+  Graph_laplacian graph;
   graph.first.assign(n + 1, 0);
   for(const auto& [i, j] : edges)
     if(i != j) {
@@ -125,11 +106,12 @@ inline double dot(const std::vector<double>& a, const std::vector<double>& b)
   return sum;
 }
 
-/// Solves L d = b for one coordinate by conjugate gradients preconditioned by L's
-/// diagonal, from d. The visitor hears of each iteration as the start of the scan (the
-/// map is made before the grid is met), and may stop it.
-inline void solve_scaled_coordinate(const Scaled_edge_graph& graph, const std::vector<double>& b, std::vector<double>& d,
-                                    const Progress& progress)
+/// Solves L d = b for one coordinate by conjugate gradients preconditioned by a
+/// multigrid cycle, from d. The visitor hears of each iteration as the start of the
+/// scan (the map is made before the grid is met), and may stop it. Returns the
+/// iterations made.
+inline int solve_scaled_coordinate(const Graph_laplacian& graph, Aggregation_multigrid& preconditioner,
+                                    const std::vector<double>& b, std::vector<double>& d, const Progress& progress)
 {
   const std::size_t n = graph.size();
   std::vector<double> r(n), z(n), p(n), lp(n);
@@ -137,33 +119,30 @@ inline void solve_scaled_coordinate(const Scaled_edge_graph& graph, const std::v
   for(std::size_t i = 0; i < n; ++i)
     r[i] = b[i] - lp[i];
   const double goal = sizing_solve_tolerance * std::sqrt(dot(b, b));
-  auto precondition = [&] {
-    for(std::size_t i = 0; i < n; ++i)
-      z[i] = graph.diagonal[i] > 0 ? r[i] / graph.diagonal[i] : 0.;
-  };
-  precondition();
+  preconditioner.apply(r, z);
   p = z;
   double rz = dot(r, z);
   for(int iteration = 0; iteration < maximum_sizing_solve_iterations; ++iteration) {
     progress.report(Remeshing_stage::SCAN, 0.);
     if(!(std::sqrt(dot(r, r)) > goal))
-      return;
+      return iteration;
     graph.multiply(p, lp);
     const double curvature = dot(p, lp);
     if(!(curvature > 0))
-      return; // p in L's kernel: nothing left to reduce
+      return iteration; // p in L's kernel: nothing left to reduce
     const double alpha = rz / curvature;
     for(std::size_t i = 0; i < n; ++i) {
       d[i] += alpha * p[i];
       r[i] -= alpha * lp[i];
     }
-    precondition();
+    preconditioner.apply(r, z);
     const double rz_next = dot(r, z);
     const double beta = rz_next / rz;
     rz = rz_next;
     for(std::size_t i = 0; i < n; ++i)
       p[i] = z[i] + beta * p[i];
   }
+  return maximum_sizing_solve_iterations;
 }
 
 /// g for the values `f` and the scales `sizing` (already divided by their median) of n
@@ -175,7 +154,8 @@ std::vector<std::array<double, D>> scaled_differential(const std::vector<std::ar
                                                        const Progress& progress)
 {
   const std::size_t n = f.size();
-  const Scaled_edge_graph graph = scaled_edge_graph(n, edges, sizing);
+  const Graph_laplacian graph = scaled_edge_graph(n, edges, sizing);
+  Aggregation_multigrid preconditioner(graph);
   std::vector<std::array<double, D>> g(f);
   std::vector<double> b(n), displacement(n);
   for(int q = 0; q < D; ++q) {
@@ -188,7 +168,7 @@ std::vector<std::array<double, D>> scaled_differential(const std::vector<std::ar
       b[i] = sum;
     }
     std::fill(displacement.begin(), displacement.end(), 0.);
-    solve_scaled_coordinate(graph, b, displacement, progress);
+    solve_scaled_coordinate(graph, preconditioner, b, displacement, progress);
     for(std::size_t i = 0; i < n; ++i)
       g[i][q] += displacement[i];
   }
