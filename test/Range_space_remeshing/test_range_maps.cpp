@@ -765,6 +765,37 @@ void test_sizing_field()
     stopped = true;
   }
   CHECK(stopped && num_vertices(emptied) == 0);
+  // a bad cell size or grid origin is refused before the solve (the visitor hears
+  // nothing) and before the output is touched, with or without a field
+  for(int bad = 0; bad < 4; ++bad) {
+    const bool bad_origin = bad == 1;
+    heard.clear();
+    Mesh kept = plain;
+    Kind kind = Kind::CANCELLED;
+    const auto listen = [&](RSR::Remeshing_stage stage, double) {
+      heard.push_back(stage);
+      return true;
+    };
+    try {
+      if(bad_origin)
+        RSR::primal_remesh(sphere, kept,
+                           np.sizing_field(upper_half_finer)
+                               .grid_origin(std::array<double, 3>{{0., std::numeric_limits<double>::quiet_NaN(), 0.}})
+                               .progress_visitor(listen));
+      else if(bad == 0)
+        RSR::remesh(sphere, kept, RSR::parameters::grid_spacing(-1.).sizing_field(upper_half_finer).progress_visitor(listen));
+      else if(bad == 2)
+        RSR::remesh(sphere, kept, RSR::parameters::grid_spacing(0.).progress_visitor(listen));
+      else
+        RSR::primal_remesh(sphere, kept,
+                           RSR::parameters::grid_spacing(std::numeric_limits<double>::infinity()).progress_visitor(listen));
+    } catch(const RSR::Remeshing_error& e) {
+      kind = e.kind();
+    }
+    CHECK(kind == Kind::BAD_PARAMETER);
+    CHECK(heard.empty());
+    CHECK_EQ(fingerprint(kept), fingerprint(plain));
+  }
   // values too far apart for the weights 1 / s^2 to stay doubles
   const auto too_wide = boost::make_function_property_map<V>([&](V v) { return v == first ? 1e-13 : 1.; });
   Kind wide_kind = Kind::CANCELLED;

@@ -124,7 +124,23 @@ void refuse_range_map()
                 "(convert a Point_3, a std::array<float, D> or a vector in the map's get())");
 }
 
-// What a run reads of `np_in` besides the maps, checked.
+inline void check_cell_size(double cell_size)
+{
+  if(!(cell_size > 0) || !std::isfinite(cell_size))
+    throw Remeshing_error("the cell size must be a positive finite number", Remeshing_error::Kind::BAD_PARAMETER);
+}
+
+template <class Point_d>
+void check_grid(double cell_size, const Point_d& origin)
+{
+  check_cell_size(cell_size);
+  for(double x : origin)
+    if(!std::isfinite(x))
+      throw Remeshing_error("the grid origin must be finite", Remeshing_error::Kind::BAD_PARAMETER);
+}
+
+// What a run reads of `np_in` besides the maps, checked (and the grid given, which the
+// run checks again: refused here before any work, the sizing field's solve included).
 struct Primal_run_options
 {
   bool seeded, preserve, check, refine_locally;
@@ -147,17 +163,11 @@ Primal_run_options primal_run_options(const NamedParametersIn& np_in)
   if(options.preserve && options.seeded)
     throw Remeshing_error("preserve_topology needs the complete scan (Seeding_method::COMPLETE_SCAN)",
                           Remeshing_error::Kind::BAD_PARAMETER);
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParametersIn, CGAL::internal_np::grid_spacing_t>::value)
+    check_cell_size(double(get_parameter(np_in, CGAL::internal_np::grid_spacing)));
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParametersIn, internal_np::grid_origin_t>::value)
+    check_grid(1., get_parameter(np_in, internal_np::grid_origin));
   return options;
-}
-
-template <class Point_d>
-void check_grid(double cell_size, const Point_d& origin)
-{
-  if(!(cell_size > 0) || !std::isfinite(cell_size))
-    throw Remeshing_error("the cell size must be a positive finite number", Remeshing_error::Kind::BAD_PARAMETER);
-  for(double x : origin)
-    if(!std::isfinite(x))
-      throw Remeshing_error("the grid origin must be finite", Remeshing_error::Kind::BAD_PARAMETER);
 }
 
 /// `check_named_parameters()` with the parameters `primal_remesh()` reads for its
