@@ -796,6 +796,18 @@ void test_sizing_field()
     CHECK(heard.empty());
     CHECK_EQ(fingerprint(kept), fingerprint(plain));
   }
+  // a failed target search leaves the output empty, not with the last size it tried
+  {
+    Mesh emptied_by_search = plain;
+    Kind kind = Kind::CANCELLED;
+    try {
+      RSR::remesh(sphere, emptied_by_search, RSR::parameters::number_of_target_vertices(3));
+    } catch(const RSR::Remeshing_error& e) {
+      kind = e.kind();
+    }
+    CHECK(kind == Kind::TARGET_NOT_REACHED);
+    CHECK_EQ(num_vertices(emptied_by_search), 0u);
+  }
   // values too far apart for the weights 1 / s^2 to stay doubles
   const auto too_wide = boost::make_function_property_map<V>([&](V v) { return v == first ? 1e-13 : 1.; });
   Kind wide_kind = Kind::CANCELLED;

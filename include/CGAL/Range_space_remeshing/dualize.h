@@ -136,7 +136,8 @@ well placed. Its normal is the normalised average of the vertices' normals.
       \cgalParamDefault{none}
     \cgalParamNEnd
   \cgalNamedParamsEnd
-\throws Remeshing_error if `primal` is empty, or is `quads`.
+\throws Remeshing_error if `primal` is `quads` (nothing touched), or is empty (`quads`
+  then left empty, as on any exception during the construction).
 */
 template <class PolygonMesh, class QuadMesh,
           class NamedParametersIn = CGAL::parameters::Default_named_parameters,
@@ -159,7 +160,7 @@ Dual_statistics dualize(const PolygonMesh& primal, QuadMesh& quads,
                                                  np::vertex_attribute_maps_t>());
   internal::refuse_same_mesh(primal, quads, "dualize()");
   const internal::Progress progress = internal::progress_of(np_in);
-  return internal::emptied_on_cancel(
+  return internal::emptied_on_failure(
       quads, [&] { return internal::build_dual(primal, quads, np_in, np_out, progress); });
 }
 

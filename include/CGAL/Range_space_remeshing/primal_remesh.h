@@ -44,8 +44,9 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out, const Na
   const Progress progress = progress_of(np_in);
   const std::size_t target = target_vertices_of(np_in);
   primal_run_options(np_in); // its refusals before the sizing field's solve
+  // the sizing field's solve: its refusals leave the output as it is, a cancel empties it
   return emptied_on_cancel(out, [&] {
-    return with_sizing_field(tm, np_in, [&](const auto& np) {
+    return with_sizing_field(tm, np_in, [&](const auto& np) { return emptied_on_failure(out, [&] {
       remove_all_elements(out);
       const double h = cell_size_of(tm, np);
       if(target == 0)
@@ -60,7 +61,7 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out, const Na
       }, [&] { return stats.topology_checked && !stats.topology_preserved(); },
       CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::preserve_topology), false));
       return stats;
-    });
+    }); });
   });
 }
 
@@ -277,6 +278,9 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
   needs cells whose output would pass four times the cap; of kind `BAD_PARAMETER` with
   `preserve_topology` in the seeded mode, if `out` is `tm`, or if `maximum_number` or
   `number_of_target_vertices` is negative or not whole, or the target is above the cap.
+  When it throws, `out` is untouched if the named parameters were refused (checked
+  before any work), and left empty otherwise: never a partial remesh, nor the last
+  cell size a failed target search tried.
 
 \tparam ConcurrencyTag `CGAL::Sequential_tag` (the default) or `CGAL::Parallel_tag`
   (needs TBB: link `CGAL::TBB_support`). In parallel, the complete scan maps the

@@ -283,8 +283,9 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
   improvement.untangle_near_target = target;
   check_vertex_attributes(tm, np_in, np_out);
   primal_run_options(np_in); // its refusals before the sizing field's solve
+  // the sizing field's solve: its refusals leave the output as it is, a cancel empties it
   return emptied_on_cancel(quads, [&] {
-    return with_sizing_field(tm, np_in, [&](const auto& np) {
+    return with_sizing_field(tm, np_in, [&](const auto& np) { return emptied_on_failure(quads, [&] {
       remove_all_elements(quads);
       const double h = cell_size_of(tm, np);
       Remesh_statistics stats;
@@ -300,7 +301,7 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
       stats.time_attributes_ms = sample_vertex_attributes(tm, quads, np, np_out, progress);
       stats.time_total_ms += stats.time_attributes_ms;
       return stats;
-    });
+    }); });
   });
 }
 
@@ -431,7 +432,8 @@ empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
 \returns what each stage did.
 \throws Remeshing_error as `primal_remesh()` does, and of kind `BAD_PARAMETER` if
   `number_of_collapse_passes` or `number_of_relaxation_steps` is negative or not whole
-  (before any work); `Remeshing_cancelled` when the visitor asks to stop.
+  (before any work); `Remeshing_cancelled` when the visitor asks to stop. As for
+  `primal_remesh()`, `quads` is then untouched (a refused parameter) or empty.
 */
 template <class ConcurrencyTag = CGAL::Sequential_tag, class TriangleMesh, class QuadMesh,
           class NamedParameters = CGAL::parameters::Default_named_parameters,

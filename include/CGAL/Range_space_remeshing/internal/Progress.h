@@ -133,13 +133,28 @@ void remove_all_elements(Graph& g)
   remove_all_elements(g, 0);
 }
 
-/// `run()`, after which `mesh` is left empty if the run was cancelled.
+/// `run()`, after which `mesh` is left empty if the run was cancelled: around a stage
+/// whose other errors are refusals of the parameters, which leave the output as it was.
 template <class Mesh, class Run>
 auto emptied_on_cancel(Mesh& mesh, const Run& run)
 {
   try {
     return run();
   } catch(const Remeshing_cancelled&) {
+    remove_all_elements(mesh);
+    throw;
+  }
+}
+
+/// `run()`, after which `mesh` is left empty if the run threw (was cancelled, refused
+/// its input, ran out of memory): an output mesh never holds a partial remesh, nor the
+/// last trial of a search that failed.
+template <class Mesh, class Run>
+auto emptied_on_failure(Mesh& mesh, const Run& run)
+{
+  try {
+    return run();
+  } catch(...) {
     remove_all_elements(mesh);
     throw;
   }
