@@ -85,14 +85,19 @@ struct Graph_laplacian
   }
 };
 
+// no aggregate: a vertex without neighbours (a removed vertex of the mesh, an isolated
+// one), whose equation is empty and which must not hold the coarsening back
+constexpr std::size_t no_aggregate = (std::numeric_limits<std::size_t>::max)();
+
 /// Groups the vertices of `graph` into connected aggregates: `aggregate[i]` is the
-/// aggregate of vertex i; returns their number. A neighbour is strong when its weight
-/// is at least `strength` times the largest at the vertex (the others would be
-/// smoothed apart by the Gauss-Seidel sweeps anyway).
+/// aggregate of vertex i, or `no_aggregate` for a vertex without neighbours; returns
+/// their number. A neighbour is strong when its weight is at least `strength` times
+/// the largest at the vertex (the others would be smoothed apart by the Gauss-Seidel
+/// sweeps anyway).
 inline std::size_t aggregate_vertices(const Graph_laplacian& graph, std::vector<std::size_t>& aggregate)
 {
   constexpr double strength = 0.25;
-  constexpr std::size_t none = (std::numeric_limits<std::size_t>::max)();
+  constexpr std::size_t none = no_aggregate;
   const std::size_t n = graph.size();
   aggregate.assign(n, none);
   std::vector<double> strongest(n, 0.);
@@ -103,7 +108,7 @@ inline std::size_t aggregate_vertices(const Graph_laplacian& graph, std::vector<
   std::size_t count = 0;
   // a vertex whose strong neighbours are all free: it and they
   for(std::size_t i = 0; i < n; ++i) {
-    if(aggregate[i] != none)
+    if(aggregate[i] != none || graph.first[i] == graph.first[i + 1])
       continue;
     bool free = true;
     for(std::size_t k = graph.first[i]; k < graph.first[i + 1] && free; ++k)
@@ -119,7 +124,7 @@ inline std::size_t aggregate_vertices(const Graph_laplacian& graph, std::vector<
   // the rest: into the aggregate of the strongest neighbour that has one, else alone
   std::vector<std::size_t> joined(aggregate);
   for(std::size_t i = 0; i < n; ++i) {
-    if(aggregate[i] != none)
+    if(aggregate[i] != none || graph.first[i] == graph.first[i + 1])
       continue;
     double best = 0;
     for(std::size_t k = graph.first[i]; k < graph.first[i + 1]; ++k)
@@ -141,7 +146,8 @@ inline Graph_laplacian coarse_laplacian(const Graph_laplacian& graph, const std:
 {
   std::vector<std::vector<std::size_t>> members(count);
   for(std::size_t i = 0; i < graph.size(); ++i)
-    members[aggregate[i]].push_back(i);
+    if(aggregate[i] != no_aggregate)
+      members[aggregate[i]].push_back(i);
   Graph_laplacian coarse;
   coarse.first.assign(1, 0);
   coarse.diagonal.assign(count, 0.);
@@ -180,9 +186,10 @@ public:
   static constexpr int coarsest_sweeps = 20;
   // The coarse correction, scaled: an aggregate's constant value undershoots a smooth
   // error (which bends inside the aggregate), more so the more levels there are, and
-  // scaling the correction up (below 2, so that the cycle stays positive definite)
-  // makes up most of it: the classic remedy for unsmoothed aggregation, cheaper than
-  // smoothing the prolongation (which would fill the coarse graphs).
+  // scaling the correction up makes up most of it: the classic remedy for unsmoothed
+  // aggregation, cheaper than smoothing the prolongation (which would fill the coarse
+  // graphs). The value is the one that needed the fewest iterations on CGAL's meshes
+  // (benchmark/RESULTS.md).
   static constexpr double over_correction = 1.8;
 
   explicit Aggregation_multigrid(const Graph_laplacian& finest) : finest_(finest)
@@ -191,7 +198,7 @@ public:
     while(graph->size() > coarsest_size) {
       Level level;
       const std::size_t count = aggregate_vertices(*graph, level.aggregate);
-      if(double(count) > least_shrink * double(graph->size()))
+      if(double(count) > least_shrink * double(graph->size() - isolated_vertices(*graph)))
         break;
       level.coarse = coarse_laplacian(*graph, level.aggregate, count);
       levels_.push_back(std::move(level));
@@ -203,6 +210,9 @@ public:
       level.x.assign(level.coarse.size(), 0.);
     }
   }
+
+  // it keeps a reference to the graph
+  explicit Aggregation_multigrid(Graph_laplacian&&) = delete;
 
   std::size_t levels() const { return levels_.size() + 1; }
 
@@ -220,6 +230,14 @@ private:
     std::vector<double> b, x;
   };
 
+  static std::size_t isolated_vertices(const Graph_laplacian& graph)
+  {
+    std::size_t count = 0;
+    for(std::size_t i = 0; i < graph.size(); ++i)
+      count += graph.first[i] == graph.first[i + 1];
+    return count;
+  }
+
   // x from 0 towards the solution of L x = b on the graph of level `depth`
   void cycle(std::size_t depth, const Graph_laplacian& graph, const std::vector<double>& b, std::vector<double>& x)
   {
@@ -236,11 +254,13 @@ private:
     graph.multiply(x, residual_);
     std::fill(level.b.begin(), level.b.end(), 0.);
     for(std::size_t i = 0; i < graph.size(); ++i)
-      level.b[level.aggregate[i]] += b[i] - residual_[i];
+      if(level.aggregate[i] != no_aggregate)
+        level.b[level.aggregate[i]] += b[i] - residual_[i];
     std::fill(level.x.begin(), level.x.end(), 0.);
     cycle(depth + 1, level.coarse, level.b, level.x);
     for(std::size_t i = 0; i < graph.size(); ++i)
-      x[i] += over_correction * level.x[level.aggregate[i]];
+      if(level.aggregate[i] != no_aggregate)
+        x[i] += over_correction * level.x[level.aggregate[i]];
     graph.sweep_backward(b, x);
   }
 

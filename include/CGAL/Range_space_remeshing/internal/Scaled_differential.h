@@ -28,7 +28,13 @@
 // enters the residual. L d = b, L the Laplacian of the edge graph with weights
 // w_ij = 1 / s_ij^2, is solved for each coordinate by conjugate gradients
 // preconditioned by a multigrid cycle (Aggregation_multigrid.h), whose iterations do
-// not grow with the mesh as those of a diagonal preconditioner do. L is singular (translations of each connected
+// not grow with the mesh as those of a diagonal preconditioner do. An aggregate's sums
+// mix rows whose weights are up to the field's span squared apart, and their rounding
+// (1e-16 of the heavy rows) lands on the light ones: beyond a span of
+// multigrid_largest_span it could exceed the solve's tolerance, and the cycle then
+// stalls or stops on a residual that hides large errors on the light rows. There, and
+// wherever the cycle does not reach the tolerance, L's diagonal preconditions instead,
+// slower but free of such sums. L is singular (translations of each connected
 // component); b sums to zero over each, so the system is consistent. Any g gives a
 // valid remesh (each face in one cell of g): the solve's accuracy only sets how
 // closely the cells follow s, and it stops at a residual of sizing_solve_tolerance
@@ -46,6 +52,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -56,9 +64,27 @@ namespace internal {
 
 // the conjugate gradients stop when the residual is this small against b's
 constexpr double sizing_solve_tolerance = 1e-4;
-// or after this many iterations (far more than the preconditioned solve needs): the
-// solve's error only blurs the sizing
-constexpr int maximum_sizing_solve_iterations = 500;
+// the largest span of the field (its largest value over its smallest) for which the
+// multigrid cycle is used: its squared span times the doubles' rounding stays below
+// the tolerance
+constexpr double multigrid_largest_span = 1e6;
+// the multigrid's conjugate gradients stop after this many iterations (several times what it needs
+// where it works), after which the diagonal takes over
+constexpr int maximum_multigrid_iterations = 100;
+// and this many with the diagonal: the solve's error only blurs the sizing
+constexpr int maximum_sizing_solve_iterations = 5000;
+
+/// L's diagonal as a preconditioner: z = D^-1 r.
+struct Diagonal_preconditioner
+{
+  const Graph_laplacian& graph;
+
+  void apply(const std::vector<double>& r, std::vector<double>& z) const
+  {
+    for(std::size_t i = 0; i < r.size(); ++i)
+      z[i] = graph.diagonal[i] > 0 ? r[i] / graph.diagonal[i] : 0.;
+  }
+};
 
 /// s_ij, the scale asked of the edge ij.
 inline double edge_scale(const std::vector<double>& sizing, std::size_t i, std::size_t j)
@@ -106,12 +132,13 @@ inline double dot(const std::vector<double>& a, const std::vector<double>& b)
   return sum;
 }
 
-/// Solves L d = b for one coordinate by conjugate gradients preconditioned by a
-/// multigrid cycle, from d. The visitor hears of each iteration as the start of the
-/// scan (the map is made before the grid is met), and may stop it. Returns the
-/// iterations made.
-inline int solve_scaled_coordinate(const Graph_laplacian& graph, Aggregation_multigrid& preconditioner,
-                                    const std::vector<double>& b, std::vector<double>& d, const Progress& progress)
+/// Solves L d = b for one coordinate by conjugate gradients with `preconditioner`, from
+/// d, in at most `maximum_iterations`. The visitor hears of each iteration as the start
+/// of the scan (the map is made before the grid is met), and may stop it. Returns
+/// whether the residual reached its goal; `iterations` counts them.
+template <class Preconditioner>
+bool solve_scaled_coordinate(const Graph_laplacian& graph, Preconditioner& preconditioner, const std::vector<double>& b,
+                             std::vector<double>& d, const Progress& progress, int maximum_iterations, int& iterations)
 {
   const std::size_t n = graph.size();
   std::vector<double> r(n), z(n), p(n), lp(n);
@@ -122,14 +149,14 @@ inline int solve_scaled_coordinate(const Graph_laplacian& graph, Aggregation_mul
   preconditioner.apply(r, z);
   p = z;
   double rz = dot(r, z);
-  for(int iteration = 0; iteration < maximum_sizing_solve_iterations; ++iteration) {
+  for(iterations = 0; iterations < maximum_iterations; ++iterations) {
     progress.report(Remeshing_stage::SCAN, 0.);
     if(!(std::sqrt(dot(r, r)) > goal))
-      return iteration;
+      return true;
     graph.multiply(p, lp);
     const double curvature = dot(p, lp);
     if(!(curvature > 0))
-      return iteration; // p in L's kernel: nothing left to reduce
+      return false; // p in L's kernel: no step reduces the residual
     const double alpha = rz / curvature;
     for(std::size_t i = 0; i < n; ++i) {
       d[i] += alpha * p[i];
@@ -142,7 +169,20 @@ inline int solve_scaled_coordinate(const Graph_laplacian& graph, Aggregation_mul
     for(std::size_t i = 0; i < n; ++i)
       p[i] = z[i] + beta * p[i];
   }
-  return maximum_sizing_solve_iterations;
+  return !(std::sqrt(dot(r, r)) > goal);
+}
+
+/// The largest value of `sizing` over its smallest, on the vertices with edges (the
+/// others, a mesh's removed vertices, have no equation).
+inline double span_of_field(const Graph_laplacian& graph, const std::vector<double>& sizing)
+{
+  double smallest = std::numeric_limits<double>::infinity(), largest = 0;
+  for(std::size_t i = 0; i < graph.size(); ++i)
+    if(graph.first[i] < graph.first[i + 1]) {
+      smallest = (std::min)(smallest, sizing[i]);
+      largest = (std::max)(largest, sizing[i]);
+    }
+  return largest > 0 ? largest / smallest : 1.;
 }
 
 /// g for the values `f` and the scales `sizing` (already divided by their median) of n
@@ -155,7 +195,9 @@ std::vector<std::array<double, D>> scaled_differential(const std::vector<std::ar
 {
   const std::size_t n = f.size();
   const Graph_laplacian graph = scaled_edge_graph(n, edges, sizing);
-  Aggregation_multigrid preconditioner(graph);
+  std::optional<Aggregation_multigrid> multigrid;
+  if(span_of_field(graph, sizing) <= multigrid_largest_span)
+    multigrid.emplace(graph);
   std::vector<std::array<double, D>> g(f);
   std::vector<double> b(n), displacement(n);
   for(int q = 0; q < D; ++q) {
@@ -168,7 +210,13 @@ std::vector<std::array<double, D>> scaled_differential(const std::vector<std::ar
       b[i] = sum;
     }
     std::fill(displacement.begin(), displacement.end(), 0.);
-    solve_scaled_coordinate(graph, preconditioner, b, displacement, progress);
+    int iterations = 0;
+    if(!multigrid || !solve_scaled_coordinate(graph, *multigrid, b, displacement, progress,
+                                              maximum_multigrid_iterations, iterations)) {
+      std::fill(displacement.begin(), displacement.end(), 0.);
+      Diagonal_preconditioner diagonal{graph};
+      solve_scaled_coordinate(graph, diagonal, b, displacement, progress, maximum_sizing_solve_iterations, iterations);
+    }
     for(std::size_t i = 0; i < n; ++i)
       g[i][q] += displacement[i];
   }
