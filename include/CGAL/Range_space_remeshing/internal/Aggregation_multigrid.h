@@ -50,6 +50,9 @@ struct Graph_laplacian
 
   std::size_t size() const { return diagonal.size(); }
 
+  /// Whether vertex i has no neighbour (a removed vertex of the mesh): no equation.
+  bool isolated(std::size_t i) const { return first[i] == first[i + 1]; }
+
   /// y = L x
   void multiply(const std::vector<double>& x, std::vector<double>& y) const
   {
@@ -108,7 +111,7 @@ inline std::size_t aggregate_vertices(const Graph_laplacian& graph, std::vector<
   std::size_t count = 0;
   // a vertex whose strong neighbours are all free: it and they
   for(std::size_t i = 0; i < n; ++i) {
-    if(aggregate[i] != none || graph.first[i] == graph.first[i + 1])
+    if(aggregate[i] != none || graph.isolated(i))
       continue;
     bool free = true;
     for(std::size_t k = graph.first[i]; k < graph.first[i + 1] && free; ++k)
@@ -124,7 +127,7 @@ inline std::size_t aggregate_vertices(const Graph_laplacian& graph, std::vector<
   // the rest: into the aggregate of the strongest neighbour that has one, else alone
   std::vector<std::size_t> joined(aggregate);
   for(std::size_t i = 0; i < n; ++i) {
-    if(aggregate[i] != none || graph.first[i] == graph.first[i + 1])
+    if(aggregate[i] != none || graph.isolated(i))
       continue;
     double best = 0;
     for(std::size_t k = graph.first[i]; k < graph.first[i + 1]; ++k)
@@ -234,7 +237,7 @@ private:
   {
     std::size_t count = 0;
     for(std::size_t i = 0; i < graph.size(); ++i)
-      count += graph.first[i] == graph.first[i + 1];
+      count += graph.isolated(i);
     return count;
   }
 

@@ -131,12 +131,18 @@ inline void check_cell_size(double cell_size)
 }
 
 template <class Point_d>
-void check_grid(double cell_size, const Point_d& origin)
+void check_grid_origin(const Point_d& origin)
 {
-  check_cell_size(cell_size);
   for(double x : origin)
     if(!std::isfinite(x))
       throw Remeshing_error("the grid origin must be finite", Remeshing_error::Kind::BAD_PARAMETER);
+}
+
+template <class Point_d>
+void check_grid(double cell_size, const Point_d& origin)
+{
+  check_cell_size(cell_size);
+  check_grid_origin(origin);
 }
 
 // What a run reads of `np_in` besides the maps, checked (and the grid given, which the
@@ -166,7 +172,7 @@ Primal_run_options primal_run_options(const NamedParametersIn& np_in)
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParametersIn, CGAL::internal_np::grid_spacing_t>::value)
     check_cell_size(double(get_parameter(np_in, CGAL::internal_np::grid_spacing)));
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParametersIn, internal_np::grid_origin_t>::value)
-    check_grid(1., get_parameter(np_in, internal_np::grid_origin));
+    check_grid_origin(get_parameter(np_in, internal_np::grid_origin));
   return options;
 }
 

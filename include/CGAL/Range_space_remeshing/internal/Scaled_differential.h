@@ -178,7 +178,7 @@ inline double span_of_field(const Graph_laplacian& graph, const std::vector<doub
 {
   double smallest = std::numeric_limits<double>::infinity(), largest = 0;
   for(std::size_t i = 0; i < graph.size(); ++i)
-    if(graph.first[i] < graph.first[i + 1]) {
+    if(!graph.isolated(i)) {
       smallest = (std::min)(smallest, sizing[i]);
       largest = (std::max)(largest, sizing[i]);
     }
