@@ -1,15 +1,19 @@
 // No folded quad leaves the pipeline (issue 39): `remesh()` with the command-line
-// program's defaults and the position-normal map (n = 6) at a quarter of the input's
-// vertices, on CGAL's sample meshes. The output is measured by the issue's criterion:
-// a quad is folded or non-convex when the min over its corners of
-// (e_next x e_prev) . n / (|e_next| |e_prev|) is <= 0, n its unit vector-area normal.
-// The untangling stage says how many faces it left folded (none) and non-convex (the
-// same count); on the smooth meshes it leaves none, on fandisk's creases, where
-// vertices are held on crease lines, at most as many as it found.
-// Before the stage the relaxation left some on every one of them.
+// program's defaults, at a quarter of the input's vertices, on CGAL's sample meshes.
+// The output is measured by the issue's criterion: a quad is folded or non-convex when
+// the min over its corners of (e_next x e_prev) . n / (|e_next| |e_prev|) is <= 0, n
+// its unit vector-area normal.
+// With the position-normal map (n = 6) the untangling stage says how many faces it
+// left folded (none) and non-convex (the same count); on the smooth meshes it leaves
+// none, on fandisk's creases, where vertices are held on crease lines, at most as many
+// as it found. Before the stage the relaxation left some on every one of them.
+// With the identity (n = 3) on armadillo, moving vertices left 4 quads non-convex
+// (surrounded by faces that bend over its thin limbs): the collapses and rotations
+// after the moves remove them.
 // argv[1]: the folder holding CGAL's sample meshes.
 #include "test_support.h"
 
+#include <CGAL/Range_space_remeshing/Identity_range_map.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -55,38 +59,58 @@ bool is_non_convex(const std::vector<Point>& c)
   return false;
 }
 
-void check_model(const std::string& folder, const std::string& name, bool smooth)
+enum class Map
+{
+  IDENTITY,
+  POSITION_NORMAL
+};
+
+template <class RangeMap>
+RSR::Remesh_statistics remesh_a_quarter(const Mesh& input, Mesh& quads, const RangeMap& f, double diagonal)
+{
+  return RSR::remesh(input, quads,
+                     RSR::parameters::range_map(f)
+                         .grid_spacing(0.01 * diagonal)
+                         .number_of_target_vertices(num_vertices(input) / 4)
+                         .seeding_method(RSR::Seeding_method::COMPLETE_SCAN)
+                         .check_topology(true)
+                         .quad_collapse(true)
+                         .number_of_relaxation_steps(3));
+}
+
+void check_model(const std::string& folder, const std::string& name, bool smooth, Map map = Map::POSITION_NORMAL)
 {
   Mesh input;
   CHECK(CGAL::IO::read_polygon_mesh(folder + "/" + name + ".off", input));
   const double diagonal = bbox_diagonal(input);
-  auto normals = get(CGAL::dynamic_vertex_property_t<std::array<double, 3>>(), input);
-  RSR::compute_vertex_normals(input, normals);
-  const RSR::Position_normal_range_map f(get(CGAL::vertex_point, input), normals, 1.0, 0.1 * diagonal);
   Mesh quads;
-  const auto stats = RSR::remesh(input, quads,
-                                 RSR::parameters::range_map(f)
-                                     .grid_spacing(0.01 * diagonal)
-                                     .number_of_target_vertices(num_vertices(input) / 4)
-                                     .seeding_method(RSR::Seeding_method::COMPLETE_SCAN)
-                                     .check_topology(true)
-                                     .quad_collapse(true)
-                                     .number_of_relaxation_steps(3));
+  RSR::Remesh_statistics stats;
+  if(map == Map::IDENTITY) {
+    stats = remesh_a_quarter(input, quads, RSR::Identity_range_map(get(CGAL::vertex_point, input)), diagonal);
+  } else {
+    auto normals = get(CGAL::dynamic_vertex_property_t<std::array<double, 3>>(), input);
+    RSR::compute_vertex_normals(input, normals);
+    const RSR::Position_normal_range_map f(get(CGAL::vertex_point, input), normals, 1.0, 0.1 * diagonal);
+    stats = remesh_a_quarter(input, quads, f, diagonal);
+  }
   std::size_t non_convex = 0;
   for(auto face : faces(quads))
     non_convex += is_non_convex(corners_of(quads, face));
-  std::cout << name << ": " << num_faces(quads) << " faces, " << non_convex
-            << " folded or non-convex (the stage: folded " << stats.untangle.folded_before << " -> "
+  std::cout << name << (map == Map::IDENTITY ? " (identity)" : "") << ": " << num_faces(quads) << " faces, "
+            << non_convex << " folded or non-convex (the stage: folded " << stats.untangle.folded_before << " -> "
             << stats.untangle.folded_after << ", non-convex " << stats.untangle.non_convex_before << " -> "
             << stats.untangle.non_convex_after << "; " << stats.untangle.moves << " moves in " << stats.untangle.rounds
-            << " rounds)" << std::endl;
+            << " rounds, " << stats.untangle.collapses << " collapses, " << stats.untangle.rotations << " rotations)"
+            << std::endl;
   CHECK(num_faces(quads) > 0);
-  CHECK_EQ(stats.untangle.folded_after, std::size_t(0));
-  // with no face folded, the library's non-convex faces are the issue's
-  CHECK_EQ(stats.untangle.non_convex_after, non_convex);
   CHECK(stats.untangle.non_convex_after <= stats.untangle.non_convex_before);
   if(smooth)
     CHECK_EQ(non_convex, std::size_t(0));
+  if(map == Map::IDENTITY)
+    return; // a face may stay folded against its corners' normals across a thin limb, convex
+  CHECK_EQ(stats.untangle.folded_after, std::size_t(0));
+  // with no face folded, the library's non-convex faces are the issue's
+  CHECK_EQ(stats.untangle.non_convex_after, non_convex);
 }
 
 } // namespace
@@ -100,5 +124,6 @@ int main(int argc, char** argv)
   check_model(argv[1], "refined_elephant", true);
   check_model(argv[1], "bunny00", true);
   check_model(argv[1], "fandisk", false);
+  check_model(argv[1], "armadillo", true, Map::IDENTITY);
   return report("test_untangling");
 }

@@ -126,7 +126,9 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                    {"non_convex_after", all.untangle.non_convex_after},
                    {"moves", all.untangle.moves},
                    {"rounds", all.untangle.rounds},
-                   {"tries", all.untangle.tries}};
+                   {"tries", all.untangle.tries},
+                   {"collapses", all.untangle.collapses},
+                   {"rotations", all.untangle.rotations}};
   j["cell_size_used"] = s.cell_size;
   const bool carried = find_vertex_uvs(output).has_value();
   j["texture_coordinates"] = {{"carried", carried},

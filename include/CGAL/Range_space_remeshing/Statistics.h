@@ -257,6 +257,11 @@ struct Untangle_statistics
   std::size_t rounds = 0;
   /// vertices tried: for each, a search of places on its tangent planes
   std::size_t tries = 0;
+  /// quads collapsed along a diagonal where moves left them tangled (each where the
+  /// faces it changes are then less tangled: fewer non-convex, then fewer folded)
+  std::size_t collapses = 0;
+  /// edges of such quads rotated, where no collapse was allowed
+  std::size_t rotations = 0;
   double time_ms = 0;
 };
 

@@ -10,6 +10,7 @@
 #include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Quadric.h>
 #include <CGAL/Range_space_remeshing/internal/Quad_collapser.h>
+#include <CGAL/Range_space_remeshing/internal/Tangled_quad_removal.h>
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -197,6 +198,43 @@ Collapse_statistics collapse_quads(PolygonMesh& mesh,
   stats.time_ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return stats;
 }
+
+namespace internal {
+
+/// The last resort of the untangling (see Tangled_quad_removal.h), with the
+/// parameters of `collapse_quads()` and, required, its tangent planes and normals.
+/// Adds the collapses and rotations done to the statistics.
+template <class PolygonMesh, class NamedParameters>
+void remove_tangled_quads(PolygonMesh& mesh, const NamedParameters& np, Untangle_statistics& stats)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  using VPM = typename GetVertexPointMap<PolygonMesh, NamedParameters>::type;
+  VPM vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                             get_property_map(CGAL::vertex_point, mesh));
+  auto constrained = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
+                                      CGAL::Constant_property_map<vertex_descriptor, bool>(false));
+  auto vertex_index = CGAL::get_initialized_vertex_index_map(mesh, np);
+  auto face_index = CGAL::get_initialized_face_index_map(mesh, np);
+  auto planes = get_parameter(np, internal_np::vertex_tangent_planes_map);
+  auto normal_map = get_parameter(np, CGAL::internal_np::vertex_normal_map);
+  std::vector<Vec3> normals(index_bound(vertices(mesh), vertex_index));
+  for(vertex_descriptor v : vertices(mesh))
+    normals[get(vertex_index, v)] = normalized(to_vec3(get(normal_map, v)));
+  Tangled_quad_remover<PolygonMesh, VPM, decltype(planes), decltype(constrained), decltype(vertex_index),
+                       decltype(face_index)>
+      remover(mesh, vpm, planes, constrained, vertex_index, face_index, normals);
+  remover.run(stats.collapses, stats.rotations);
+  using Vector = typename boost::property_traits<decltype(normal_map)>::value_type;
+  for(vertex_descriptor v : vertices(mesh)) {
+    const Vec3& n = normals[get(vertex_index, v)];
+    put(normal_map, v, Vector(n[0], n[1], n[2]));
+  }
+  collect_garbage_if_any(mesh);
+}
+
+} // namespace internal
 
 } // namespace Range_space_remeshing
 } // namespace CGAL

@@ -100,6 +100,32 @@ Quad_improvement quad_improvement_of(const NamedParameters& np)
   return improvement;
 }
 
+/// The last stage: the untangling, and where it leaves faces tangled, the collapses
+/// and rotations that remove them, each followed by the untangling again (a few
+/// rounds: each round's operations change the faces the next untangling starts from).
+template <class QuadMesh, class NamedParameters>
+Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np)
+{
+  constexpr int rounds_of_removal = 3;
+  Untangle_statistics stats = untangle_faces(quads, np);
+  for(int round = 0; round < rounds_of_removal && stats.folded_after + stats.non_convex_after > 0; ++round) {
+    const std::size_t operations = stats.collapses + stats.rotations;
+    const auto start = std::chrono::steady_clock::now();
+    remove_tangled_quads(quads, np, stats);
+    stats.time_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    if(stats.collapses + stats.rotations == operations)
+      break;
+    const Untangle_statistics again = untangle_faces(quads, np);
+    stats.folded_after = again.folded_after;
+    stats.non_convex_after = again.non_convex_after;
+    stats.moves += again.moves;
+    stats.rounds += again.rounds;
+    stats.tries += again.tries;
+    stats.time_ms += again.time_ms;
+  }
+  return stats;
+}
+
 /// One run of the pipeline at cell size `h`, into `quads` (empty).
 template <class ConcurrencyTag, class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
 Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, const NamedParameters& np,
@@ -179,7 +205,7 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
       stats.time_relaxation_ms =
           relax_on_tangent_planes(quads, stage_parameters.number_of_relaxation_steps(improvement.relaxation_steps));
     if(improvement.untangle_near_target == 0 || is_near_target(num_vertices(quads), improvement.untangle_near_target))
-      stats.untangle = untangle_faces(quads, stage_parameters);
+      stats.untangle = untangle(quads, stage_parameters);
   } catch(const Remeshing_cancelled&) {
     // cancelled after a refined primal: the last size refined from had defects
     if(stats.primal.topology_refinements == 0)
