@@ -342,7 +342,9 @@ The whole pipeline: `primal_remesh()` of `tm`, `dualize()` of the result into
 `collapse_quads()`, `relax_on_tangent_planes()`, then an untangling: the
 vertices of the quads left folded or non-convex (see `Untangle_statistics`), and where
 needed those around them, move on their tangent planes to raise the least corner
-quality of their faces, never making a face's shape worse. When the cell size
+quality of their faces, never making a face's shape worse; a quad that moves leave
+tangled is collapsed along a diagonal, or an edge of it rotated, where that leaves
+the faces it changes less tangled (all quads and the topology kept). When the cell size
 resolves nothing (an empty primal, or only pieces without a dual), `quads` is left
 empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
 

@@ -193,15 +193,19 @@ protected:
   }
 
   /// Link condition for quads: the merged vertex has one disk of faces, no two edges
-  /// join the same vertices, no face visits a vertex twice, b and d keep valence 3.
-  bool keeps_manifold(halfedge_descriptor h0) const
+  /// join the same vertices, no face visits a vertex twice, b and d keep valence 3
+  /// (or, with `doublets_allowed`, b and d inside may drop to 2: a caller dissolves them).
+  bool keeps_manifold(halfedge_descriptor h0, bool doublets_allowed = false) const
   {
     const halfedge_descriptor h1 = next(h0, mesh_), h2 = next(h1, mesh_);
     const vertex_descriptor a = source(h0, mesh_), b = target(h0, mesh_), c = target(h1, mesh_),
                             d = target(h2, mesh_);
     if(a == c || b == d || get(constrained_, a) || get(constrained_, c) || on_border(a) || on_border(c))
       return false;
-    if(valence(b) <= lowest_valence(b) || valence(d) <= lowest_valence(d) || valence(a) < 3 || valence(c) < 3)
+    auto keeps_its_valence = [&](vertex_descriptor v) {
+      return valence(v) > lowest_valence(v) || (doublets_allowed && !on_border(v) && valence(v) == 3);
+    };
+    if(!keeps_its_valence(b) || !keeps_its_valence(d) || valence(a) < 3 || valence(c) < 3)
       return false;
     auto& around_a = around_a_;
     around_a.clear();
@@ -308,6 +312,73 @@ protected:
     unlinked_.push_back({quad, h1, h2, c});
   }
 
+  /// A vertex v of valence 2 inside and its two faces F (of o2 = b -> v) and G (of
+  /// o1 = a -> v), which share both its edges: dissolving v makes them one face
+  /// (a, x, b, y).
+  struct Doublet
+  {
+    vertex_descriptor v;
+    halfedge_descriptor o2, e1, o1, e2; // b -> v, v -> a (in F); a -> v, v -> b (in G)
+  };
+
+  /// Whether v is a doublet whose two faces are distinct quads that can become one:
+  /// a and b distinct and keeping their lowest valence, x and y distinct, v free.
+  bool find_doublet(vertex_descriptor v, Doublet& d) const
+  {
+    if(valence(v) != 2 || on_border(v) || get(constrained_, v))
+      return false;
+    d.v = v;
+    d.o2 = halfedge(v, mesh_);
+    d.e1 = next(d.o2, mesh_);
+    d.o1 = opposite(d.e1, mesh_);
+    d.e2 = next(d.o1, mesh_);
+    if(d.e2 != opposite(d.o2, mesh_) || is_border(d.o2, mesh_) || is_border(d.o1, mesh_))
+      return false;
+    const face_descriptor f = face(d.o2, mesh_), g = face(d.o1, mesh_);
+    if(f == g || !is_quad(f) || !is_quad(g))
+      return false;
+    const vertex_descriptor a = target(d.e1, mesh_), b = target(d.e2, mesh_);
+    return a != b && target(next(d.e1, mesh_), mesh_) != target(next(d.e2, mesh_), mesh_) &&
+           valence(a) > lowest_valence(a) && valence(b) > lowest_valence(b);
+  }
+
+  /// Whether the doublet's merged quad (a, x, b, y) turns like its two quads together.
+  bool merged_doublet_turns_like_before(const Doublet& d) const
+  {
+    const vertex_descriptor a = target(d.e1, mesh_), b = target(d.e2, mesh_);
+    const vertex_descriptor x = target(next(d.e1, mesh_), mesh_), y = target(next(d.e2, mesh_), mesh_);
+    corners_ = {position(a), position(x), position(b), position(y)};
+    const Vec3 merged = newell_normal(corners_);
+    corners_ = {position(d.v), position(a), position(x), position(b)};
+    Vec3 before = newell_normal(corners_);
+    corners_ = {position(d.v), position(b), position(y), position(a)};
+    const Vec3 other = newell_normal(corners_);
+    for(int i = 0; i < 3; ++i)
+      before[i] += other[i];
+    return dot(merged, before) > 0;
+  }
+
+  /// Makes the doublet's two quads one, F, and unlinks G, v and its two edges.
+  void dissolve(const Doublet& d)
+  {
+    const face_descriptor f = face(d.o2, mesh_), g = face(d.o1, mesh_);
+    const vertex_descriptor a = target(d.e1, mesh_), b = target(d.e2, mesh_);
+    const halfedge_descriptor a_x = next(d.e1, mesh_), x_b = prev(d.o2, mesh_);
+    const halfedge_descriptor b_y = next(d.e2, mesh_), y_a = prev(d.o1, mesh_);
+    set_next(x_b, b_y, mesh_);
+    set_next(y_a, a_x, mesh_);
+    set_face(b_y, f, mesh_);
+    set_face(y_a, f, mesh_);
+    set_halfedge(f, a_x, mesh_);
+    set_inner_halfedge(a, y_a);
+    set_inner_halfedge(b, x_b);
+    --valences_[index(a)];
+    --valences_[index(b)];
+    valences_[index(d.v)] = 0;
+    removed_faces_[get(face_index_, g)] = true;
+    unlinked_.push_back({g, d.e1, d.e2, d.v});
+  }
+
   /// Dissolves the vertices of valence 2 (doublets: two quads sharing two edges, as
   /// the dual leaves where it joins faces) whose two faces are distinct quads: the two
   /// become one quad. Refused where a neighbour would drop below valence 3, where the
@@ -320,44 +391,10 @@ protected:
         doublets.push_back(v);
     std::size_t removed = 0;
     for(vertex_descriptor v : doublets) {
-      const halfedge_descriptor o2 = halfedge(v, mesh_);        // b -> v, in F
-      const halfedge_descriptor e1 = next(o2, mesh_);           // v -> a, in F
-      const halfedge_descriptor o1 = opposite(e1, mesh_);       // a -> v, in G
-      const halfedge_descriptor e2 = next(o1, mesh_);           // v -> b, in G
-      if(e2 != opposite(o2, mesh_) || is_border(o2, mesh_) || is_border(o1, mesh_))
+      Doublet d;
+      if(!find_doublet(v, d) || !merged_doublet_turns_like_before(d))
         continue;
-      const face_descriptor f = face(o2, mesh_), g = face(o1, mesh_);
-      if(f == g || !is_quad(f) || !is_quad(g))
-        continue;
-      const vertex_descriptor a = target(e1, mesh_), b = target(e2, mesh_);
-      const halfedge_descriptor a_x = next(e1, mesh_), x_b = prev(o2, mesh_);
-      const halfedge_descriptor b_y = next(e2, mesh_), y_a = prev(o1, mesh_);
-      if(a == b || target(a_x, mesh_) == target(b_y, mesh_) || valence(a) <= lowest_valence(a) ||
-         valence(b) <= lowest_valence(b) || get(constrained_, v))
-        continue;
-      // the merged quad (a, x, b, y) must turn like the two it replaces
-      corners_ = {position(a), position(target(a_x, mesh_)), position(b), position(target(b_y, mesh_))};
-      const Vec3 merged = newell_normal(corners_);
-      corners_ = {position(v), position(a), position(target(a_x, mesh_)), position(b)};
-      Vec3 before = newell_normal(corners_);
-      corners_ = {position(v), position(b), position(target(b_y, mesh_)), position(a)};
-      const Vec3 other = newell_normal(corners_);
-      for(int d = 0; d < 3; ++d)
-        before[d] += other[d];
-      if(!(dot(merged, before) > 0))
-        continue;
-      set_next(x_b, b_y, mesh_);
-      set_next(y_a, a_x, mesh_);
-      set_face(b_y, f, mesh_);
-      set_face(y_a, f, mesh_);
-      set_halfedge(f, a_x, mesh_);
-      set_inner_halfedge(a, y_a);
-      set_inner_halfedge(b, x_b);
-      --valences_[index(a)];
-      --valences_[index(b)];
-      valences_[index(v)] = 0;
-      removed_faces_[get(face_index_, g)] = true;
-      unlinked_.push_back({g, e1, e2, v});
+      dissolve(d);
       ++removed;
     }
     return removed;

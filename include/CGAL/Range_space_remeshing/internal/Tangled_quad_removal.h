@@ -9,10 +9,14 @@
 // The last resort of the untangling: a face that no move of its vertices on their
 // tangent planes makes fine (Quad_untangler.h) is changed in connectivity. A tangled
 // quad is collapsed along a diagonal, or one of its edges is rotated, where that
-// leaves fewer tangled faces among those it changes; the untangling then moves the
-// vertices of what is left. Every operation lowers the number of tangled faces, so
-// the stage ends; each keeps the mesh an all-quad 2-manifold of the same topology
+// leaves the faces it changes less tangled (see Tangle); the untangling then moves
+// the vertices of what is left. Every operation lowers the tangle of the whole mesh,
+// so the stage ends; each keeps the mesh an all-quad 2-manifold of the same topology
 // (the tests of Quad_operations.h).
+//
+// Tangled quads sit where the surface bends over a thin limb, often among corners of
+// valence 3, which no collapse may lower to 2: there the corner becomes a doublet and
+// is dissolved in the same step (its two other faces become one quad).
 
 #include <CGAL/Range_space_remeshing/internal/Face_corners.h>
 #include <CGAL/Range_space_remeshing/internal/Quad_operations.h>
@@ -48,6 +52,10 @@ class Tangled_quad_remover
   using Operations::merged_position;
   using Operations::merged_normal;
   using Operations::collapse;
+  using Operations::find_doublet;
+  using Operations::dissolve;
+  using Operations::valence;
+  using typename Operations::Doublet;
   using Operations::rotate;
   using Operations::remove_unlinked_elements;
 
@@ -100,18 +108,35 @@ private:
     }
   };
 
-  // The tangle of a face, with corner `moved` (if any) at `at` with normal `at_normal`.
-  Tangle tangle(face_descriptor f, vertex_descriptor moved = vertex_descriptor(), const Vec3& at = Vec3(),
-                const Vec3& at_normal = Vec3()) const
+  // Vertices a and c of a collapse, to be one vertex at `at` with normal `normal`.
+  struct Merge
+  {
+    vertex_descriptor a, c;
+    Vec3 at, normal;
+  };
+
+  // The tangle of the polygon of `corners`, where a and c of `merge` (if any) are merged.
+  Tangle tangle(const std::vector<vertex_descriptor>& corners, const Merge* merge = nullptr) const
   {
     points_.clear();
     normals_of_corners_.clear();
-    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, mesh_), mesh_)) {
-      const bool is_moved = v == moved;
-      points_.push_back(is_moved ? at : position(v));
-      normals_of_corners_.push_back(is_moved ? at_normal : normals_[index(v)]);
+    for(vertex_descriptor v : corners) {
+      const bool merged = merge != nullptr && (v == merge->a || v == merge->c);
+      points_.push_back(merged ? merge->at : position(v));
+      normals_of_corners_.push_back(merged ? merge->normal : normals_[index(v)]);
     }
     return tangle_of_corners();
+  }
+
+  Tangle tangle(face_descriptor f) const { return tangle(corners_from(halfedge(f, mesh_))); }
+
+  // The corners of h's face, from h's target on.
+  const std::vector<vertex_descriptor>& corners_from(halfedge_descriptor h) const
+  {
+    polygon_.clear();
+    for(vertex_descriptor v : CGAL::vertices_around_face(h, mesh_))
+      polygon_.push_back(v);
+    return polygon_;
   }
 
   Tangle tangle_of_corners() const
@@ -138,32 +163,123 @@ private:
     return around_;
   }
 
-  // Collapses the quad along a diagonal where the faces around the merged vertex are
-  // then less tangled than they and the quad were: at the paper's place
-  // (merged_position()) or, failing that, at a or at c.
+  // Collapses the quad (a, b, c, d) along a diagonal, c into a, where the faces around
+  // the merged vertex are then less tangled than they and the quad were: at the
+  // paper's place (merged_position()) or, failing that, at a or at c. A corner b or d
+  // of valence 3 becomes a doublet, dissolved in the same step.
   bool collapse_away(face_descriptor quad)
   {
     const halfedge_descriptor h = halfedge(quad, mesh_);
     for(halfedge_descriptor h0 : {h, next(h, mesh_), next(next(h, mesh_), mesh_), prev(h, mesh_)}) {
-      if(!keeps_manifold(h0))
+      if(!keeps_manifold(h0, true))
         continue;
-      const vertex_descriptor a = source(h0, mesh_), c = target(next(h0, mesh_), mesh_);
-      const std::vector<face_descriptor>& around = faces_around(h0, quad);
+      const halfedge_descriptor h1 = next(h0, mesh_), h2 = next(h1, mesh_), h3 = next(h2, mesh_);
+      const vertex_descriptor a = source(h0, mesh_), b = target(h0, mesh_), c = target(h1, mesh_),
+                              d = target(h2, mesh_);
+      // the doublets the collapse would leave
+      std::vector<Future_doublet> doublets;
+      if(valence(b) == 3)
+        doublets.push_back({b, {{face(opposite(h0, mesh_), mesh_), face(opposite(h1, mesh_), mesh_)}}});
+      if(valence(d) == 3)
+        doublets.push_back({d, {{face(opposite(h2, mesh_), mesh_), face(opposite(h3, mesh_), mesh_)}}});
+      if(valence(a) + valence(c) - 2 - int(doublets.size()) < 3)
+        continue;
+      const std::vector<face_descriptor> around = faces_around(h0, quad);
       Tangle before = tangle(quad);
       for(face_descriptor g : around)
         before += tangle(g);
-      const Vec3 normal = merged_normal(a, c);
-      for(const Vec3& merged : {merged_position(h0), position(a), position(c)}) {
+      Merge merge{a, c, Vec3(), merged_normal(a, c)};
+      for(const Vec3& merged : {merged_position(h0), position(a), position(c), centroid_of_corners(around, a, c)}) {
+        merge.at = merged;
+        bool possible = true;
         Tangle after;
-        for(face_descriptor g : around) // a's faces and c's: a and c both go to `merged`
-          after += tangle(g, has_corner(g, a) ? a : c, merged, normal);
-        if(after < before) {
+        for(face_descriptor g : around)
+          if(!in_doublet(g, doublets))
+            after += tangle(corners_from(halfedge(g, mesh_)), &merge);
+        for(std::size_t k = 0; k < doublets.size() && possible; ++k)
+          if((possible = doublet_after_collapse(doublets[k], merge)))
+            after += tangle(doublet_polygon_, &merge);
+        if(possible && after < before) {
           collapse(h0, merged);
+          for(vertex_descriptor v : {b, d}) {
+            Doublet doublet;
+            if(valence(v) == 2 && find_doublet(v, doublet))
+              dissolve(doublet);
+          }
           return true;
         }
       }
     }
     return false;
+  }
+
+  // The mean of the corners of `faces` but a and c (each once per face).
+  Vec3 centroid_of_corners(const std::vector<face_descriptor>& faces, vertex_descriptor a, vertex_descriptor c) const
+  {
+    Vec3 sum = {{0, 0, 0}};
+    std::size_t count = 0;
+    for(face_descriptor g : faces)
+      for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(g, mesh_), mesh_))
+        if(v != a && v != c) {
+          const Vec3 p = position(v);
+          for(int i = 0; i < 3; ++i)
+            sum[i] += p[i];
+          ++count;
+        }
+    for(int i = 0; i < 3; ++i)
+      sum[i] /= double(count);
+    return sum;
+  }
+
+  // A corner of valence 3 off the diagonal of a collapse, and its faces but the quad.
+  struct Future_doublet
+  {
+    vertex_descriptor v;
+    std::array<face_descriptor, 2> faces;
+  };
+
+  static bool in_doublet(face_descriptor g, const std::vector<Future_doublet>& doublets)
+  {
+    for(const Future_doublet& doublet : doublets)
+      if(g == doublet.faces[0] || g == doublet.faces[1])
+        return true;
+    return false;
+  }
+
+  // Whether the doublet that the collapse of `merge` leaves at v (valence 3 now) can be
+  // dissolved (as find_doublet() will test it); its merged quad into doublet_polygon_.
+  // v's faces but the quad, from v on, are (v, p1, p2, p3) and (v, r1, r2, r3) with
+  // p3 = r1 and r3 = p1 once a and c are one: they become (p1, p2, p3, r2).
+  bool doublet_after_collapse(const Future_doublet& doublet, const Merge& merge)
+  {
+    const vertex_descriptor v = doublet.v;
+    const std::array<face_descriptor, 2>& faces = doublet.faces;
+    std::array<std::array<vertex_descriptor, 4>, 2> from_v;
+    for(int k = 0; k < 2; ++k) {
+      if(!is_live_quad(faces[k]))
+        return false;
+      halfedge_descriptor g = halfedge(faces[k], mesh_);
+      while(source(g, mesh_) != v)
+        g = next(g, mesh_);
+      for(int i = 0; i < 4; ++i, g = next(g, mesh_))
+        from_v[k][i] = source(g, mesh_);
+      for(vertex_descriptor& w : from_v[k])
+        if(w == merge.c)
+          w = merge.a;
+    }
+    std::array<vertex_descriptor, 4> p = from_v[0], r = from_v[1];
+    if(p[3] != r[1]) // the faces in the other order around v
+      std::swap(p, r);
+    if(faces[0] == faces[1] || p[3] != r[1] || p[1] != r[3] || p[2] == r[2] || p[1] == p[3] ||
+       get(this->constrained_, v))
+      return false;
+    // p1 and p3 lose the edge to v: one of them is the merged vertex, the other must
+    // keep its lowest valence
+    const vertex_descriptor other = p[1] == merge.a ? p[3] : p[1];
+    if(valence(other) <= this->lowest_valence(other))
+      return false;
+    doublet_polygon_ = {p[1], p[2], p[3], r[2]};
+    return true;
   }
 
   // Rotates an edge of the quad where the two new quads are less tangled than the
@@ -193,26 +309,17 @@ private:
   // The tangle of the quad of hexagon corners `first` .. `first` + 3 (mod 6).
   Tangle tangle_after_rotation(const std::array<halfedge_descriptor, 6>& hexagon, int first) const
   {
-    points_.clear();
-    normals_of_corners_.clear();
-    for(int i = 0; i < 4; ++i) {
-      const vertex_descriptor v = source(hexagon[(first + i) % 6], mesh_);
-      points_.push_back(position(v));
-      normals_of_corners_.push_back(normals_[index(v)]);
-    }
-    return tangle_of_corners();
-  }
-
-  bool has_corner(face_descriptor g, vertex_descriptor v) const
-  {
-    for(vertex_descriptor w : CGAL::vertices_around_face(halfedge(g, mesh_), mesh_))
-      if(w == v)
-        return true;
-    return false;
+    std::vector<vertex_descriptor>& quad = polygon_;
+    quad.clear();
+    for(int i = 0; i < 4; ++i)
+      quad.push_back(source(hexagon[(first + i) % 6], mesh_));
+    return tangle(quad);
   }
 
   mutable std::vector<Vec3> points_, normals_of_corners_;
   mutable std::vector<face_descriptor> around_;
+  mutable std::vector<vertex_descriptor> polygon_;
+  std::vector<vertex_descriptor> doublet_polygon_;
 };
 
 } // namespace internal
