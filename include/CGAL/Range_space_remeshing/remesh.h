@@ -100,27 +100,35 @@ Quad_improvement quad_improvement_of(const NamedParameters& np)
   return improvement;
 }
 
-/// The last stage: the untangling, and where it leaves faces tangled, the collapses
-/// and rotations that remove them, each followed by the untangling again (a few
-/// rounds: each round's operations change the faces the next untangling starts from).
+/// The last stage: the untangling, and where it leaves faces tangled, with
+/// `change_connectivity` (the collapse's parameter: without it the dual's connectivity
+/// stays), the collapses and rotations that remove them, each followed by the
+/// untangling again (a few rounds: each round's operations change the faces the next
+/// untangling starts from). The runs after the first share a budget of vertices tried
+/// as large as its own (see `untangle_tries_per_vertex`); once it is spent (a large
+/// part of the mesh tangled: the cause is upstream) the stage ends.
 template <class QuadMesh, class NamedParameters>
-Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np)
+Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np, bool change_connectivity)
 {
   constexpr int rounds_of_removal = 3;
   Untangle_statistics stats = untangle_faces(quads, np);
-  for(int round = 0; round < rounds_of_removal && stats.folded_after + stats.non_convex_after > 0; ++round) {
+  const std::size_t tries_per_vertex = 2 * untangle_tries_per_vertex; // the first run's and as many again
+  auto budget_left = [&] { return stats.tries < tries_per_vertex * num_vertices(quads); };
+  for(int round = 0; change_connectivity && round < rounds_of_removal &&
+                     stats.folded_after + stats.non_convex_after > 0 && budget_left();
+      ++round) {
     const std::size_t operations = stats.collapses + stats.rotations;
     const auto start = std::chrono::steady_clock::now();
     remove_tangled_quads(quads, np, stats);
     stats.time_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if(stats.collapses + stats.rotations == operations)
       break;
-    const Untangle_statistics again = untangle_faces(quads, np);
+    const Untangle_statistics again = untangle_faces(quads, np, stats.tries, tries_per_vertex);
     stats.folded_after = again.folded_after;
     stats.non_convex_after = again.non_convex_after;
     stats.moves += again.moves;
     stats.rounds += again.rounds;
-    stats.tries += again.tries;
+    stats.tries = again.tries;
     stats.time_ms += again.time_ms;
   }
   return stats;
@@ -205,7 +213,7 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
       stats.time_relaxation_ms =
           relax_on_tangent_planes(quads, stage_parameters.number_of_relaxation_steps(improvement.relaxation_steps));
     if(improvement.untangle_near_target == 0 || is_near_target(num_vertices(quads), improvement.untangle_near_target))
-      stats.untangle = untangle(quads, stage_parameters);
+      stats.untangle = untangle(quads, stage_parameters, improvement.collapse);
   } catch(const Remeshing_cancelled&) {
     // cancelled after a refined primal: the last size refined from had defects
     if(stats.primal.topology_refinements == 0)

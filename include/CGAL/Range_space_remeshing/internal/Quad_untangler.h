@@ -34,6 +34,12 @@ struct Face_shape_counts
   std::size_t folded = 0, non_convex = 0;
 };
 
+/// Vertices the untangling tries in all, per vertex of the mesh: where a large part of
+/// the mesh is tangled (the cause is then upstream: a map much finer than the input's
+/// facets) the stage stops at a cost of a few relaxation steps instead of searching on.
+/// The runs after the collapses and rotations of the last resort have as many again.
+constexpr std::size_t untangle_tries_per_vertex = 1;
+
 /// Moves the vertices of the faces that are folded or non-convex. `Place` is called as
 /// `place(i, p)`: where vertex i goes when sent towards p (on its tangent planes, along
 /// its border), its own position if it stays.
@@ -50,10 +56,6 @@ public:
   // alone count as stuck (the vertices around them move too), and then the stage
   // stops: small moves can go on for a hundred rounds and untangle nothing.
   static constexpr int patience = 8;
-  // Vertices tried in all, per vertex of the mesh: where a large part of the mesh is
-  // tangled (the cause is then upstream: a map much finer than the input's facets)
-  // the stage stops at a cost of a few relaxation steps instead of searching on.
-  static constexpr std::size_t tries_per_vertex = 1;
 
   Quad_untangler(const Face_corners& fc, std::vector<Vec3>& position, const std::vector<Vec3>& normal, Place place)
     : fc_(fc), position_(position), normal_(normal), place_(place), stuck_(fc.first_face.size() - 1, 0)
@@ -84,13 +86,12 @@ public:
 
   /// Rounds over the vertices of the tangled faces, in index order, until none is
   /// left, or the rounds stop reducing their number even with the vertices around
-  /// them, or the tries reach their budget. Returns the faces still tangled; `moves`,
-  /// `rounds` and `tried` count what was done.
+  /// them, or the tries (`tried`, counted on from its value) reach `budget`. Returns the
+  /// faces still tangled; `moves`, `rounds` and `tried` count what was done.
   /// The visitor hears from every `Progress::interval`-th vertex tried, and can cancel.
   std::vector<std::size_t> run(std::vector<std::size_t> tangled, std::size_t& moves, std::size_t& rounds,
-                               std::size_t& tried, const Progress& progress)
+                               std::size_t& tried, std::size_t budget, const Progress& progress)
   {
-    const std::size_t budget = tries_per_vertex * (fc_.first_face.size() - 1);
     std::size_t fewest = tangled.size(), rounds_since_fewer = 0;
     bool with_ring = false;
     std::vector<std::size_t> touched;
@@ -125,7 +126,7 @@ private:
     for(std::size_t i : vertices_to_move(tangled, with_ring)) {
       if(stuck_[i])
         continue;
-      if(tried == budget)
+      if(tried >= budget)
         break;
       progress.report_at_every(Remeshing_stage::RELAXATION, tried, double(tried) / double(budget));
       ++tried;

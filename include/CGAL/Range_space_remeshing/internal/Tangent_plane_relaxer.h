@@ -159,10 +159,13 @@ public:
   /// folded or non-convex, and where needed those around them, on their tangent planes
   /// (border vertices along their border). The projections are made only for the
   /// vertices it tries to move, the mesh is written only if some face is tangled.
-  Untangle_statistics untangle()
+  /// `tried_before`: the vertices tried by earlier runs of the same stage, which count
+  /// against its budget of `tries_per_vertex` per vertex (see `untangle_tries_per_vertex`).
+  Untangle_statistics untangle(std::size_t tried_before = 0, std::size_t tries_per_vertex = untangle_tries_per_vertex)
   {
     const auto start = std::chrono::steady_clock::now();
     Untangle_statistics stats;
+    stats.tries = tried_before;
     read_vertices();
     const Face_corners face_corners(mesh_, vertex_index_, n_);
     auto place = [this](std::size_t i, const Vec3& p) { return placed(i, p); };
@@ -175,7 +178,7 @@ public:
       find_border();
       start_projections();
       vertex_of_index();
-      tangled = untangler.run(tangled, stats.moves, stats.rounds, stats.tries, progress_);
+      tangled = untangler.run(tangled, stats.moves, stats.rounds, stats.tries, tries_per_vertex * n_, progress_);
       const Face_shape_counts after = untangler.count(tangled);
       stats.folded_after = after.folded;
       stats.non_convex_after = after.non_convex;

@@ -189,7 +189,7 @@ private:
       for(face_descriptor g : around)
         before += tangle(g);
       Merge merge{a, c, Vec3(), merged_normal(a, c)};
-      for(const Vec3& merged : {merged_position(h0), position(a), position(c), centroid_of_corners(around, a, c)}) {
+      for(const Vec3& merged : {merged_position(h0), position(a), position(c)}) {
         merge.at = merged;
         bool possible = true;
         Tangle after;
@@ -211,24 +211,6 @@ private:
       }
     }
     return false;
-  }
-
-  // The mean of the corners of `faces` but a and c (each once per face).
-  Vec3 centroid_of_corners(const std::vector<face_descriptor>& faces, vertex_descriptor a, vertex_descriptor c) const
-  {
-    Vec3 sum = {{0, 0, 0}};
-    std::size_t count = 0;
-    for(face_descriptor g : faces)
-      for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(g, mesh_), mesh_))
-        if(v != a && v != c) {
-          const Vec3 p = position(v);
-          for(int i = 0; i < 3; ++i)
-            sum[i] += p[i];
-          ++count;
-        }
-    for(int i = 0; i < 3; ++i)
-      sum[i] /= double(count);
-    return sum;
   }
 
   // A corner of valence 3 off the diagonal of a collapse, and its faces but the quad.
