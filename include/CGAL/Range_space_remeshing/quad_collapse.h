@@ -203,9 +203,11 @@ namespace internal {
 
 /// The last resort of the untangling (see Tangled_quad_removal.h), with the
 /// parameters of `collapse_quads()` and, required, its tangent planes and normals.
-/// Adds the collapses and rotations done to the statistics.
-template <class PolygonMesh, class NamedParameters>
-void remove_tangled_quads(PolygonMesh& mesh, const NamedParameters& np, Untangle_statistics& stats)
+/// Adds the collapses and rotations done to the statistics; sets `changed` (vertex ->
+/// bool) at a corner of every face they made.
+template <class PolygonMesh, class NamedParameters, class ChangedMap>
+void remove_tangled_quads(PolygonMesh& mesh, const NamedParameters& np, Untangle_statistics& stats,
+                          ChangedMap changed)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -225,7 +227,7 @@ void remove_tangled_quads(PolygonMesh& mesh, const NamedParameters& np, Untangle
   Tangled_quad_remover<PolygonMesh, VPM, decltype(planes), decltype(constrained), decltype(vertex_index),
                        decltype(face_index)>
       remover(mesh, vpm, planes, constrained, vertex_index, face_index, normals);
-  remover.run(stats.collapses, stats.rotations);
+  remover.run(stats.collapses, stats.rotations, changed);
   using Vector = typename boost::property_traits<decltype(normal_map)>::value_type;
   for(vertex_descriptor v : vertices(mesh)) {
     const Vec3& n = normals[get(vertex_index, v)];

@@ -117,14 +117,24 @@ namespace internal {
 
 /// The untangling of `remesh()` (see `Untangle_statistics` and Quad_untangler.h), with
 /// the parameters of `relax_on_tangent_planes()` but its steps: after the relaxation,
-/// or in place of it. `tried_before`, `tries_per_vertex`: see `Tangent_plane_relaxer::untangle()`.
+/// or in place of it.
 template <class PolygonMesh, class NamedParameters>
-Untangle_statistics untangle_faces(PolygonMesh& mesh, const NamedParameters& np, std::size_t tried_before = 0,
-                                   std::size_t tries_per_vertex = untangle_tries_per_vertex)
+Untangle_statistics untangle_faces(PolygonMesh& mesh, const NamedParameters& np)
+{
+  const Progress progress = progress_of(np);
+  return Tangent_plane_relaxer<PolygonMesh, NamedParameters>(mesh, np, progress).untangle();
+}
+
+/// The untangling again, after the last resort's operations: from the tangled faces
+/// with a corner where `start_at` is true; `tried_before`, `tries_per_vertex`: see
+/// `Tangent_plane_relaxer::untangle()`.
+template <class PolygonMesh, class NamedParameters, class StartAtMap>
+Untangle_statistics untangle_faces_again(PolygonMesh& mesh, const NamedParameters& np, StartAtMap start_at,
+                                         std::size_t tried_before, std::size_t tries_per_vertex)
 {
   const Progress progress = progress_of(np);
   return Tangent_plane_relaxer<PolygonMesh, NamedParameters>(mesh, np, progress)
-      .untangle(tried_before, tries_per_vertex);
+      .untangle(tried_before, tries_per_vertex, start_at);
 }
 
 } // namespace internal

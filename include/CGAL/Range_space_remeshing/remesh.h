@@ -102,9 +102,9 @@ Quad_improvement quad_improvement_of(const NamedParameters& np)
 
 /// The last stage: the untangling, and where it leaves faces tangled, with
 /// `change_connectivity` (the collapse's parameter: without it the dual's connectivity
-/// stays), the collapses and rotations that remove them, each followed by the
-/// untangling again (a few rounds: each round's operations change the faces the next
-/// untangling starts from). The runs after the first share a budget of vertices tried
+/// stays), the collapses and rotations that remove them, each round of them followed
+/// by the untangling again from the faces they made (at most three rounds). The runs
+/// after the first share a budget of vertices tried
 /// as large as its own (see `untangle_tries_per_vertex`); once it is spent (a large
 /// part of the mesh tangled: the cause is upstream) the stage ends.
 template <class QuadMesh, class NamedParameters>
@@ -114,16 +114,21 @@ Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np, bool ch
   Untangle_statistics stats = untangle_faces(quads, np);
   const std::size_t tries_per_vertex = 2 * untangle_tries_per_vertex; // the first run's and as many again
   auto budget_left = [&] { return stats.tries < tries_per_vertex * num_vertices(quads); };
+  // where the operations changed faces: the untangling again starts from there only (it
+  // left the others as they are, and would spend its tries on them again)
+  auto changed = get(CGAL::dynamic_vertex_property_t<bool>(), quads);
   for(int round = 0; change_connectivity && round < rounds_of_removal &&
                      stats.folded_after + stats.non_convex_after > 0 && budget_left();
       ++round) {
+    for(auto v : vertices(quads))
+      put(changed, v, false);
     const std::size_t operations = stats.collapses + stats.rotations;
     const auto start = std::chrono::steady_clock::now();
-    remove_tangled_quads(quads, np, stats);
+    remove_tangled_quads(quads, np, stats, changed);
     stats.time_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if(stats.collapses + stats.rotations == operations)
       break;
-    const Untangle_statistics again = untangle_faces(quads, np, stats.tries, tries_per_vertex);
+    const Untangle_statistics again = untangle_faces_again(quads, np, changed, stats.tries, tries_per_vertex);
     stats.folded_after = again.folded_after;
     stats.non_convex_after = again.non_convex_after;
     stats.moves += again.moves;

@@ -137,6 +137,17 @@ inline Face_shape shape_of(const Face_corners& fc, std::size_t k, const std::vec
       [&](std::size_t i) -> const Vec3& { return normal[corner[i]]; });
 }
 
+/// Whether face k turns left at every corner seen from its own vector area (the
+/// issue's and the benchmark's criterion, which does not look at the normals).
+inline bool is_convex_in_itself(const Face_corners& fc, std::size_t k, const std::vector<Vec3>& position)
+{
+  const std::size_t* corner = fc.corners.data() + fc.first[k];
+  auto point = [&](std::size_t i) -> const Vec3& { return position[corner[i]]; };
+  Vec3 area, reference;
+  polygon_area_and_reference(fc.corner_count(k), point, point, area, reference);
+  return turns_left_at_every_corner(fc.corner_count(k), point, area);
+}
+
 /// The corner quality of face k (see `polygon_corner_quality()`).
 inline double corner_quality(const Face_corners& fc, std::size_t k, const std::vector<Vec3>& position,
                              const std::vector<Vec3>& normal, double cap, double& capped_sum)

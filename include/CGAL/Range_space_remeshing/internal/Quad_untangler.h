@@ -62,6 +62,7 @@ public:
   {}
 
   Face_shape shape(std::size_t k) const { return shape_of(fc_, k, position_, normal_); }
+  bool is_convex_in_itself(std::size_t k) const { return internal::is_convex_in_itself(fc_, k, position_); }
 
   /// The faces that are not fine, in order.
   std::vector<std::size_t> tangled_faces() const

@@ -161,7 +161,12 @@ public:
   /// vertices it tries to move, the mesh is written only if some face is tangled.
   /// `tried_before`: the vertices tried by earlier runs of the same stage, which count
   /// against its budget of `tries_per_vertex` per vertex (see `untangle_tries_per_vertex`).
-  Untangle_statistics untangle(std::size_t tried_before = 0, std::size_t tries_per_vertex = untangle_tries_per_vertex)
+  /// `start_at` (vertex -> bool): the tangled faces it works on are those not convex in
+  /// themselves (seen from their own vector area, folded or not) and those with a corner
+  /// where it is true; the counts are of all.
+  template <class StartAtMap = CGAL::Constant_property_map<vertex_descriptor, bool>>
+  Untangle_statistics untangle(std::size_t tried_before = 0, std::size_t tries_per_vertex = untangle_tries_per_vertex,
+                               StartAtMap start_at = StartAtMap(true))
   {
     const auto start = std::chrono::steady_clock::now();
     Untangle_statistics stats;
@@ -175,11 +180,14 @@ public:
     stats.folded_before = stats.folded_after = before.folded;
     stats.non_convex_before = stats.non_convex_after = before.non_convex;
     if(!tangled.empty()) {
+      vertex_of_index();
+      keep_starting_faces(untangler, face_corners, start_at, tangled);
+    }
+    if(!tangled.empty()) {
       find_border();
       start_projections();
-      vertex_of_index();
-      tangled = untangler.run(tangled, stats.moves, stats.rounds, stats.tries, tries_per_vertex * n_, progress_);
-      const Face_shape_counts after = untangler.count(tangled);
+      untangler.run(tangled, stats.moves, stats.rounds, stats.tries, tries_per_vertex * n_, progress_);
+      const Face_shape_counts after = untangler.count(untangler.tangled_faces());
       stats.folded_after = after.folded;
       stats.non_convex_after = after.non_convex;
       write_back();
@@ -190,6 +198,22 @@ public:
 
 private:
   std::size_t index(vertex_descriptor v) const { return get(vertex_index_, v); }
+
+  // Keeps the faces not convex in themselves or with a corner where `start_at` is true.
+  template <class Untangler, class StartAtMap>
+  void keep_starting_faces(const Untangler& untangler, const Face_corners& face_corners, StartAtMap start_at,
+                           std::vector<std::size_t>& faces) const
+  {
+    auto starts = [&](std::size_t k) {
+      if(!untangler.is_convex_in_itself(k))
+        return true;
+      for(std::size_t c = face_corners.first[k]; c < face_corners.first[k + 1]; ++c)
+        if(get(start_at, vertex_of_[face_corners.corners[c]]))
+          return true;
+      return false;
+    };
+    faces.erase(std::remove_if(faces.begin(), faces.end(), [&](std::size_t k) { return !starts(k); }), faces.end());
+  }
 
   void vertex_of_index()
   {

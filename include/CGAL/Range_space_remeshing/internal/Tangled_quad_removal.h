@@ -68,8 +68,10 @@ public:
 
   /// Collapses or rotates around each tangled quad, in the order of `faces()`, where
   /// that leaves the faces it changes less tangled; removes what the collapses
-  /// unlinked. Adds the operations done to `collapses` and `rotations`.
-  void run(std::size_t& collapses, std::size_t& rotations)
+  /// unlinked. Adds the operations done to `collapses` and `rotations`; sets `changed`
+  /// (vertex -> bool) at a corner of every face an operation made.
+  template <class ChangedMap>
+  void run(std::size_t& collapses, std::size_t& rotations, ChangedMap changed)
   {
     std::vector<face_descriptor> tangled;
     for(face_descriptor f : faces(mesh_))
@@ -78,10 +80,14 @@ public:
     for(face_descriptor f : tangled) {
       if(!is_live_quad(f) || !tangle(f).any())
         continue;
-      if(collapse_away(f))
+      vertex_descriptor corner;
+      if(collapse_away(f, corner))
         ++collapses;
-      else if(rotate_away(f))
+      else if(rotate_away(f, corner))
         ++rotations;
+      else
+        continue;
+      put(changed, corner, true);
     }
     remove_unlinked_elements();
   }
@@ -166,8 +172,9 @@ private:
   // Collapses the quad (a, b, c, d) along a diagonal, c into a, where the faces around
   // the merged vertex are then less tangled than they and the quad were: at the
   // paper's place (merged_position()) or, failing that, at a or at c. A corner b or d
-  // of valence 3 becomes a doublet, dissolved in the same step.
-  bool collapse_away(face_descriptor quad)
+  // of valence 3 becomes a doublet, dissolved in the same step. `corner`: the merged
+  // vertex, a corner of every face the collapse changes.
+  bool collapse_away(face_descriptor quad, vertex_descriptor& corner)
   {
     const halfedge_descriptor h = halfedge(quad, mesh_);
     for(halfedge_descriptor h0 : {h, next(h, mesh_), next(next(h, mesh_), mesh_), prev(h, mesh_)}) {
@@ -201,6 +208,7 @@ private:
             after += tangle(doublet_polygon_, &merge);
         if(possible && after < before) {
           collapse(h0, merged);
+          corner = a;
           for(vertex_descriptor v : {b, d}) {
             Doublet doublet;
             if(valence(v) == 2 && find_doublet(v, doublet))
@@ -265,8 +273,8 @@ private:
   }
 
   // Rotates an edge of the quad where the two new quads are less tangled than the
-  // two old ones.
-  bool rotate_away(face_descriptor quad)
+  // two old ones. `corner`: an end of the new edge, a corner of both.
+  bool rotate_away(face_descriptor quad, vertex_descriptor& corner)
   {
     std::array<halfedge_descriptor, 6> hexagon;
     for(halfedge_descriptor h : CGAL::halfedges_around_face(halfedge(quad, mesh_), mesh_)) {
@@ -280,6 +288,7 @@ private:
         Tangle after = tangle_after_rotation(hexagon, k);
         after += tangle_after_rotation(hexagon, k + 3);
         if(after < before) {
+          corner = source(hexagon[k], mesh_);
           rotate(h, hexagon, k);
           return true;
         }
