@@ -125,6 +125,26 @@ void check_model(const std::string& folder, const std::string& name, bool smooth
   CHECK_EQ(stats.untangle.non_convex_after, non_convex);
 }
 
+// The last resort's connectivity changes follow the collapse's parameters: none without
+// `quad_collapse`, no rotation without `do_flip` (armadillo made 2 before either).
+void check_collapse_parameters(const std::string& folder)
+{
+  Mesh input;
+  CHECK(CGAL::IO::read_polygon_mesh(folder + "/armadillo.off", input));
+  const double diagonal = bbox_diagonal(input);
+  const RSR::Identity_range_map f(get(CGAL::vertex_point, input));
+  auto parameters = RSR::parameters::range_map(f)
+                        .grid_spacing(0.01 * diagonal)
+                        .number_of_target_vertices(num_vertices(input) / 4)
+                        .number_of_relaxation_steps(3);
+  Mesh quads;
+  const auto without_rotations = RSR::remesh(input, quads, parameters.do_flip(false));
+  CHECK_EQ(without_rotations.untangle.rotations, std::size_t(0));
+  quads.clear();
+  const auto without_collapse = RSR::remesh(input, quads, parameters.quad_collapse(false));
+  CHECK_EQ(without_collapse.untangle.collapses + without_collapse.untangle.rotations, std::size_t(0));
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -138,5 +158,6 @@ int main(int argc, char** argv)
   check_model(argv[1], "fandisk", false);
   check_model(argv[1], "armadillo", true, Map::IDENTITY);
   check_model(argv[1], "man", true, Map::IDENTITY);
+  check_collapse_parameters(argv[1]);
   return report("test_untangling");
 }

@@ -226,7 +226,8 @@ void remove_tangled_quads(PolygonMesh& mesh, const NamedParameters& np, Untangle
     normals[get(vertex_index, v)] = normalized(to_vec3(get(normal_map, v)));
   Tangled_quad_remover<PolygonMesh, VPM, decltype(planes), decltype(constrained), decltype(vertex_index),
                        decltype(face_index)>
-      remover(mesh, vpm, planes, constrained, vertex_index, face_index, normals);
+      remover(mesh, vpm, planes, constrained, vertex_index, face_index, normals,
+              choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true));
   remover.run(stats.collapses, stats.rotations, changed);
   using Vector = typename boost::property_traits<decltype(normal_map)>::value_type;
   for(vertex_descriptor v : vertices(mesh)) {

@@ -78,7 +78,8 @@ struct Quad_improvement
   std::size_t collapse_passes = 10;
   std::size_t relaxation_steps = 3;
   // With a target vertex count, the untangling runs only in a run that the search
-  // accepts (it moves vertices, it keeps their count): not in the runs it throws away.
+  // accepts (it moves vertices, and its last resort removes a few, which the search
+  // then counts): not in the runs it throws away.
   std::size_t untangle_near_target = 0;
   // false in the target search's first runs: refine_around_defects only once a cell
   // size near the target is found (it adds a few vertices, for thrice the runs)
@@ -100,15 +101,15 @@ Quad_improvement quad_improvement_of(const NamedParameters& np)
   return improvement;
 }
 
-/// The last stage: the untangling, and where it leaves faces tangled, with
-/// `change_connectivity` (the collapse's parameter: without it the dual's connectivity
-/// stays), the collapses and rotations that remove them, each round of them followed
-/// by the untangling again from the faces they made (at most three rounds). The runs
-/// after the first share a budget of vertices tried
-/// as large as its own (see `untangle_tries_per_vertex`); once it is spent (a large
-/// part of the mesh tangled: the cause is upstream) the stage ends.
+/// The last stage: the untangling, and where it leaves faces tangled, with the
+/// collapse's parameters (`improvement.collapse`: without it the dual's connectivity
+/// stays; `rotate_edges`), the collapses and rotations that remove them, each round of
+/// them followed by the untangling again from the faces they made (at most three
+/// rounds). The first untangling tries at most as many vertices as the mesh has (see
+/// `untangle_tries_per_vertex`), the whole stage twice as many; once that is spent (a
+/// large part of the mesh tangled: the cause is upstream) the stage ends.
 template <class QuadMesh, class NamedParameters>
-Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np, bool change_connectivity)
+Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np, const Quad_improvement& improvement)
 {
   constexpr int rounds_of_removal = 3;
   Untangle_statistics stats = untangle_faces(quads, np);
@@ -117,14 +118,14 @@ Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np, bool ch
   // where the operations changed faces: the untangling again starts from there only (it
   // left the others as they are, and would spend its tries on them again)
   auto changed = get(CGAL::dynamic_vertex_property_t<bool>(), quads);
-  for(int round = 0; change_connectivity && round < rounds_of_removal &&
+  for(int round = 0; improvement.collapse && round < rounds_of_removal &&
                      stats.folded_after + stats.non_convex_after > 0 && budget_left();
       ++round) {
     for(auto v : vertices(quads))
       put(changed, v, false);
     const std::size_t operations = stats.collapses + stats.rotations;
     const auto start = std::chrono::steady_clock::now();
-    remove_tangled_quads(quads, np, stats, changed);
+    remove_tangled_quads(quads, np.do_flip(improvement.rotate_edges), stats, changed);
     stats.time_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if(stats.collapses + stats.rotations == operations)
       break;
@@ -218,7 +219,7 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
       stats.time_relaxation_ms =
           relax_on_tangent_planes(quads, stage_parameters.number_of_relaxation_steps(improvement.relaxation_steps));
     if(improvement.untangle_near_target == 0 || is_near_target(num_vertices(quads), improvement.untangle_near_target))
-      stats.untangle = untangle(quads, stage_parameters, improvement.collapse);
+      stats.untangle = untangle(quads, stage_parameters, improvement);
   } catch(const Remeshing_cancelled&) {
     // cancelled after a refined primal: the last size refined from had defects
     if(stats.primal.topology_refinements == 0)
@@ -397,12 +398,12 @@ empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
       \cgalParamDefault{`Dual_placement::QEM`}
     \cgalParamNEnd
     \cgalParamNBegin{quad_collapse}
-      \cgalParamDescription{whether `collapse_quads()` runs}
+      \cgalParamDescription{whether `collapse_quads()` runs, and the untangling's collapses and rotations}
       \cgalParamType{bool}
       \cgalParamDefault{`true`}
     \cgalParamNEnd
     \cgalParamNBegin{do_flip}
-      \cgalParamDescription{whether the collapse also rotates edges}
+      \cgalParamDescription{whether the collapse (and the untangling's last resort) also rotates edges}
       \cgalParamType{bool}
       \cgalParamDefault{`true`}
     \cgalParamNEnd

@@ -12,7 +12,7 @@
 // leaves the faces it changes less tangled (see Tangle); the untangling then moves
 // the vertices of what is left. Every operation lowers the tangle of the whole mesh,
 // so the stage ends; each keeps the mesh an all-quad 2-manifold of the same topology
-// (the tests of Quad_operations.h).
+// (the link conditions of Quad_operations.h, and for doublets doublet_after_collapse()).
 //
 // Tangled quads sit where the surface bends over a thin limb, often among corners of
 // valence 3, which no collapse may lower to 2: there the corner becomes a doublet and
@@ -23,6 +23,7 @@
 
 #include <CGAL/boost/graph/iterator.h>
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <vector>
@@ -61,9 +62,11 @@ class Tangled_quad_remover
 
 public:
   /// `normals` holds unit normals by vertex index; merged vertices' are updated.
+  /// Without `rotate_edges`, only collapses.
   Tangled_quad_remover(PolygonMesh& mesh, VertexPointMap vpm, TangentPlanesMap planes, ConstrainedMap constrained,
-                       VertexIndexMap vertex_index, FaceIndexMap face_index, std::vector<Vec3>& normals)
-    : Operations(mesh, vpm, planes, constrained, vertex_index, face_index, normals)
+                       VertexIndexMap vertex_index, FaceIndexMap face_index, std::vector<Vec3>& normals,
+                       bool rotate_edges)
+    : Operations(mesh, vpm, planes, constrained, vertex_index, face_index, normals), rotate_edges_(rotate_edges)
   {}
 
   /// Collapses or rotates around each tangled quad, in the order of `faces()`, where
@@ -83,7 +86,7 @@ public:
       vertex_descriptor corner;
       if(collapse_away(f, corner))
         ++collapses;
-      else if(rotate_away(f, corner))
+      else if(rotate_edges_ && rotate_away(f, corner))
         ++rotations;
       else
         continue;
@@ -158,7 +161,7 @@ private:
   }
 
   // The faces around a and c but `quad` (each once).
-  std::vector<face_descriptor>& faces_around(halfedge_descriptor h0, face_descriptor quad) const
+  const std::vector<face_descriptor>& faces_around(halfedge_descriptor h0, face_descriptor quad)
   {
     around_.clear();
     for(halfedge_descriptor start : {opposite(h0, mesh_), next(h0, mesh_)}) // targets a, c
@@ -169,6 +172,21 @@ private:
     return around_;
   }
 
+  // A corner of valence 3 off the diagonal of a collapse, and its faces but the quad.
+  struct Future_doublet
+  {
+    vertex_descriptor v;
+    std::array<face_descriptor, 2> faces;
+  };
+
+  static bool in_doublet(face_descriptor g, const std::vector<Future_doublet>& doublets)
+  {
+    for(const Future_doublet& doublet : doublets)
+      if(g == doublet.faces[0] || g == doublet.faces[1])
+        return true;
+    return false;
+  }
+
   // Collapses the quad (a, b, c, d) along a diagonal, c into a, where the faces around
   // the merged vertex are then less tangled than they and the quad were: at the
   // paper's place (merged_position()) or, failing that, at a or at c. A corner b or d
@@ -177,7 +195,7 @@ private:
   bool collapse_away(face_descriptor quad, vertex_descriptor& corner)
   {
     const halfedge_descriptor h = halfedge(quad, mesh_);
-    for(halfedge_descriptor h0 : {h, next(h, mesh_), next(next(h, mesh_), mesh_), prev(h, mesh_)}) {
+    for(halfedge_descriptor h0 : {h, next(h, mesh_)}) { // the two diagonals (the places tried are symmetric)
       if(!keeps_manifold(h0, true))
         continue;
       const halfedge_descriptor h1 = next(h0, mesh_), h2 = next(h1, mesh_), h3 = next(h2, mesh_);
@@ -191,7 +209,7 @@ private:
         doublets.push_back({d, {{face(opposite(h2, mesh_), mesh_), face(opposite(h3, mesh_), mesh_)}}});
       if(valence(a) + valence(c) - 2 - int(doublets.size()) < 3)
         continue;
-      const std::vector<face_descriptor> around = faces_around(h0, quad);
+      const std::vector<face_descriptor>& around = faces_around(h0, quad);
       Tangle before = tangle(quad);
       for(face_descriptor g : around)
         before += tangle(g);
@@ -218,21 +236,6 @@ private:
         }
       }
     }
-    return false;
-  }
-
-  // A corner of valence 3 off the diagonal of a collapse, and its faces but the quad.
-  struct Future_doublet
-  {
-    vertex_descriptor v;
-    std::array<face_descriptor, 2> faces;
-  };
-
-  static bool in_doublet(face_descriptor g, const std::vector<Future_doublet>& doublets)
-  {
-    for(const Future_doublet& doublet : doublets)
-      if(g == doublet.faces[0] || g == doublet.faces[1])
-        return true;
     return false;
   }
 
@@ -308,7 +311,8 @@ private:
   }
 
   mutable std::vector<Vec3> points_, normals_of_corners_;
-  mutable std::vector<face_descriptor> around_;
+  bool rotate_edges_;
+  std::vector<face_descriptor> around_;
   mutable std::vector<vertex_descriptor> polygon_;
   std::vector<vertex_descriptor> doublet_polygon_;
 };
