@@ -124,6 +124,7 @@ inline double percentile(std::vector<double> values, double percent)
 struct Shape
 {
   std::size_t interior_vertices = 0, interior_valence_4 = 0, interior_valence_6 = 0;
+  std::size_t interior_valence_2 = 0; // doublets: two faces sharing two edges
   std::size_t border_vertices = 0, border_valence_3 = 0;
   std::size_t quads = 0, bad_quads = 0, non_quads = 0;
   std::size_t triangles = 0, folded_triangles = 0;
@@ -139,6 +140,7 @@ inline void count_valences(const Mesh& m, Shape& s)
       s.border_valence_3 += degree(v, m) == 3;
     } else {
       ++s.interior_vertices;
+      s.interior_valence_2 += degree(v, m) == 2;
       s.interior_valence_4 += degree(v, m) == 4;
       s.interior_valence_6 += degree(v, m) == 6;
     }

@@ -16,6 +16,7 @@
 //  * the 1st percentile (nearest rank) and the minimum of the corner angles of all
 //    quads: the unsigned angle between the corner's two edges, in degrees;
 //  * faces that are not quads;
+//  * doublets: vertices inside the surface of valence 2 (two faces sharing two edges);
 //  * the output's topology against the input's: Euler characteristic V - E + F,
 //    connected components of faces, border cycles;
 //  * the vertex count reached and the wall time of the run (input normals included).
@@ -170,8 +171,8 @@ void print_markdown_header()
 {
   std::cout << "| model | map | input vertices | target | output vertices | interior valence 4 | border valence 3 | "
                "folded or non-convex quads | 1st-percentile corner angle | min corner angle | non-quads | "
-               "input topology | topology of the output | ms |\n"
-               "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---:|\n";
+               "doublets | input topology | topology of the output | ms |\n"
+               "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|---|---:|\n";
 }
 
 void print_markdown_row(const Run& r)
@@ -180,7 +181,7 @@ void print_markdown_row(const Run& r)
   std::cout << "| " << r.model << " | " << r.map << " | " << r.input_vertices << " | "
             << (r.target > 0 ? std::to_string(r.target) : "–") << " | ";
   if(!r.error.empty()) {
-    std::cout << "no output: " << r.error << " | | | | | | | " << describe(r.input_topology) << " | | "
+    std::cout << "no output: " << r.error << " | | | | | | | | " << describe(r.input_topology) << " | | "
               << fixed(r.ms, 0) << " |\n";
     return;
   }
@@ -190,7 +191,8 @@ void print_markdown_row(const Run& r)
             << (s.border_vertices > 0 ? fixed(percent(s.border_valence_3, s.border_vertices), 1) + " %" : "–")
             << " | " << s.bad_quads << " (" << fixed(percent(s.bad_quads, s.quads), 2) << " %) | "
             << fixed(s.angle_p1, 1) << "° | " << fixed(s.angle_min, 1) << "° | " << s.non_quads << " | "
-            << describe(r.input_topology) << " | " << topology_change(r.input_topology, r.output_topology) << " | "
+            << s.interior_valence_2 << " | " << describe(r.input_topology) << " | "
+            << topology_change(r.input_topology, r.output_topology) << " | "
             << fixed(r.ms, 0) << " |\n";
 }
 
@@ -226,6 +228,7 @@ void print_json_run(const Run& r, bool last)
             << ", \"interior_valence_4\": " << s.interior_valence_4 << ", \"border_vertices\": " << s.border_vertices
             << ", \"border_valence_3\": " << s.border_valence_3 << ", \"quads\": " << s.quads
             << ", \"folded_or_non_convex_quads\": " << s.bad_quads << ", \"non_quads\": " << s.non_quads
+            << ", \"doublets\": " << s.interior_valence_2
             << ", \"corner_angle_p1_degrees\": " << json_number(s.angle_p1)
             << ", \"corner_angle_min_degrees\": " << json_number(s.angle_min)
             << ", \"input_topology\": " << json_topology(r.input_topology)

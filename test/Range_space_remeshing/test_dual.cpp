@@ -393,6 +393,29 @@ void test_all_quads_in_pipeline(const Mesh& bull)
   CHECK_EQ(RSR::internal::number_of_parallel_edges(quads), std::size_t(0));
 }
 
+/// A quad of `m` whose corners all have valence 4 (the middle of a cube's side).
+Mesh::Face_index middle_quad(const Mesh& m)
+{
+  for(auto f : faces(m)) {
+    bool middle = true;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, m), m))
+      middle = middle && degree(v, m) == 4;
+    if(middle)
+      return f;
+  }
+  return Mesh::null_face();
+}
+
+/// Splits the face of `to_u` and `to_w` between their targets, with a vertex in the
+/// middle of the new edge (two quads sharing two edges); returns that vertex.
+Mesh::Vertex_index split_with_midpoint(Mesh& m, Mesh::Halfedge_index to_u, Mesh::Halfedge_index to_w)
+{
+  const auto diagonal = CGAL::Euler::split_face(to_u, to_w, m);
+  const auto split = CGAL::Euler::split_edge(diagonal, m);
+  m.point(target(split, m)) = CGAL::midpoint(m.point(source(split, m)), m.point(target(next(split, m), m)));
+  return target(split, m);
+}
+
 /// Quad meshes the collapse did not produce: a regular subdivided cube, where no
 /// collapse lowers the energy; a dual collapsed as Surface_mesh and as Polyhedron_3
 /// alike; constrained vertices; bad input.
@@ -409,19 +432,9 @@ void test_collapse_on_other_meshes()
 
   // a doublet: the quad in the middle of a side split into two quads sharing two
   // edges (a diagonal with a vertex in its middle); it must be dissolved
-  for(auto f : faces(with_doublet)) {
-    bool middle = true;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, with_doublet), with_doublet))
-      middle = middle && degree(v, with_doublet) == 4;
-    if(!middle)
-      continue;
-    const auto h = halfedge(f, with_doublet);
-    const auto diagonal = CGAL::Euler::split_face(h, next(next(h, with_doublet), with_doublet), with_doublet);
-    const auto split = CGAL::Euler::split_edge(diagonal, with_doublet);
-    with_doublet.point(target(split, with_doublet)) =
-        CGAL::midpoint(with_doublet.point(source(split, with_doublet)),
-                       with_doublet.point(target(next(split, with_doublet), with_doublet)));
-    break;
+  {
+    const auto h = halfedge(middle_quad(with_doublet), with_doublet);
+    split_with_midpoint(with_doublet, h, next(next(h, with_doublet), with_doublet));
   }
   CHECK_EQ(num_faces(with_doublet), num_faces(cube) + 1);
   const auto dissolved = RSR::collapse_quads(with_doublet);
@@ -432,6 +445,31 @@ void test_collapse_on_other_meshes()
   CHECK(CGAL::is_valid_polygon_mesh(with_doublet));
   for(auto f : faces(with_doublet))
     CHECK_EQ(degree(f, with_doublet), std::size_t(4));
+
+  // a row of two doublets: a middle quad (x, b, y, z) split by the diagonal x - a - y,
+  // then (x, b, y, a) by b - v - a. v is a doublet beside a of valence 3: dissolving v
+  // leaves a a doublet, dissolved next, and the quad is whole again (v was kept before)
+  Mesh with_row = cube;
+  {
+    const auto to_x = halfedge(middle_quad(with_row), with_row);
+    const auto b = target(next(to_x, with_row), with_row);
+    const auto a = split_with_midpoint(with_row, to_x, next(next(to_x, with_row), with_row));
+    for(auto to_a : CGAL::halfedges_around_target(a, with_row)) {
+      const auto to_b = next(next(to_a, with_row), with_row);
+      if(!is_border(to_a, with_row) && target(to_b, with_row) == b) {
+        split_with_midpoint(with_row, to_b, to_a);
+        break;
+      }
+    }
+  }
+  CHECK_EQ(num_faces(with_row), num_faces(cube) + 2);
+  const auto row_dissolved = RSR::collapse_quads(with_row);
+  CHECK_EQ(row_dissolved.removed_doublets, std::size_t(2));
+  CHECK_EQ(num_faces(with_row), num_faces(cube));
+  CHECK_EQ(num_vertices(with_row), num_vertices(cube));
+  CHECK(CGAL::is_valid_polygon_mesh(with_row));
+  for(auto v : vertices(with_row))
+    CHECK(degree(v, with_row) >= 3);
 
   // an irregular dual: the same collapses on Surface_mesh and on Polyhedron_3
   const Mesh input = make_torus(1.0, 0.4, 120, 60);

@@ -208,8 +208,8 @@ struct Collapse_statistics
 {
   /// quads collapsed along a diagonal (each removes one face and one vertex)
   std::size_t collapsed_quads = 0;
-  /// vertices of valence 2 dissolved first, each merging its two quads into one
-  /// (each also removes one face and one vertex)
+  /// vertices of valence 2 dissolved before and after the passes, each merging its two
+  /// quads into one (each also removes one face and one vertex)
   std::size_t removed_doublets = 0;
   /// edges between two quads turned to join the other corners of the two (each lowers
   /// the valence energy and keeps all counts)

@@ -26,6 +26,23 @@
 namespace CGAL {
 namespace Range_space_remeshing {
 
+namespace internal {
+
+/// Puts the unit normals the operations kept by vertex index (and updated for merged
+/// vertices) into `normal_map`, while the indices still name the mesh's vertices.
+template <class PolygonMesh, class VertexIndexMap, class NormalMap>
+void write_back_normals(const PolygonMesh& mesh, VertexIndexMap vertex_index, const std::vector<Vec3>& normals,
+                        NormalMap normal_map)
+{
+  using Vector = typename boost::property_traits<NormalMap>::value_type;
+  for(auto v : vertices(mesh)) {
+    const Vec3& n = normals[get(vertex_index, v)];
+    put(normal_map, v, Vector(n[0], n[1], n[2]));
+  }
+}
+
+} // namespace internal
+
 /*!
 \ingroup PkgRangeSpaceRemeshingRef
 
@@ -41,6 +58,13 @@ involved, and only if the result stays a valid manifold mesh:
 - no face around the merged vertex folds over: each triangle of its fan from the merged
   vertex keeps a positive orientation with respect to the face's normal before the collapse;
 - a and c are not constrained (`vertex_is_constrained_map`).
+
+Before the collapses, and again after them, the doublets go: a vertex of valence 2
+inside the surface, whose two quads share two edges, is removed and its two quads
+become one (unless a neighbour on the border would drop below valence 2, the merged
+quad would visit a vertex twice, or it would face against the two). A neighbour of
+valence 3 this leaves with valence 2 is a doublet in turn and goes next. The second
+sweep takes those the first had to leave and the passes' operations since freed.
 
 The collapses are interleaved with edge rotations (unless `do_flip` is `false`): the
 edge u-v between the quads (u, v, f1, f2) and (v, u, g1, g2) turns to join f1 and g1
@@ -181,10 +205,7 @@ Collapse_statistics collapse_quads(PolygonMesh& mesh,
   // the mesh is valid after each collapse or rotation: a cancellation keeps those done
   auto finish = [&] {
     if constexpr(has_normals) // before the garbage collection: indices still match
-      for(vertex_descriptor v : vertices(mesh)) {
-        const internal::Vec3& n = normals[get(vertex_index, v)];
-        put(normal_map, v, Vector(n[0], n[1], n[2]));
-      }
+      internal::write_back_normals(mesh, vertex_index, normals, normal_map);
     internal::collect_garbage_if_any(mesh);
   };
   Collapse_statistics stats;
@@ -229,11 +250,7 @@ void remove_tangled_quads(PolygonMesh& mesh, const NamedParameters& np, Untangle
       remover(mesh, vpm, planes, constrained, vertex_index, face_index, normals,
               choose_parameter(get_parameter(np, CGAL::internal_np::do_flip), true));
   remover.run(stats.collapses, stats.rotations, changed);
-  using Vector = typename boost::property_traits<decltype(normal_map)>::value_type;
-  for(vertex_descriptor v : vertices(mesh)) {
-    const Vec3& n = normals[get(vertex_index, v)];
-    put(normal_map, v, Vector(n[0], n[1], n[2]));
-  }
+  write_back_normals(mesh, vertex_index, normals, normal_map); // before the garbage collection
   collect_garbage_if_any(mesh);
 }
 

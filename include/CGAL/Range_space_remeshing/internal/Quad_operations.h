@@ -323,7 +323,9 @@ protected:
 
   /// Whether v is a doublet whose two faces are distinct quads that can become one:
   /// a and b distinct and keeping their lowest valence, x and y distinct, v free.
-  bool find_doublet(vertex_descriptor v, Doublet& d) const
+  /// With `cascade`, a or b inside the surface may drop from 3 to 2: it becomes a
+  /// doublet in turn, which the caller dissolves next.
+  bool find_doublet(vertex_descriptor v, Doublet& d, bool cascade = false) const
   {
     if(valence(v) != 2 || on_border(v) || get(constrained_, v))
       return false;
@@ -338,8 +340,11 @@ protected:
     if(f == g || !is_quad(f) || !is_quad(g))
       return false;
     const vertex_descriptor a = target(d.e1, mesh_), b = target(d.e2, mesh_);
-    return a != b && target(next(d.e1, mesh_), mesh_) != target(next(d.e2, mesh_), mesh_) &&
-           valence(a) > lowest_valence(a) && valence(b) > lowest_valence(b);
+    auto keeps_its_valence = [&](vertex_descriptor w) {
+      return valence(w) > lowest_valence(w) || (cascade && !on_border(w) && valence(w) == 3);
+    };
+    return a != b && target(next(d.e1, mesh_), mesh_) != target(next(d.e2, mesh_), mesh_) && keeps_its_valence(a) &&
+           keeps_its_valence(b);
   }
 
   /// Whether the doublet's merged quad (a, x, b, y) turns like its two quads together.
@@ -381,23 +386,38 @@ protected:
 
   /// Dissolves the vertices of valence 2 (doublets: two quads sharing two edges, as
   /// the dual leaves where it joins faces) whose two faces are distinct quads: the two
-  /// become one quad. Refused where a neighbour would drop below valence 3, where the
-  /// merged face would visit a vertex twice, or where it would fold over.
-  std::size_t remove_doublets()
+  /// become one quad. A neighbour of valence 3 that this leaves with 2 is dissolved in
+  /// turn (a row of them goes one by one), so that a doublet next to a vertex of
+  /// valence 3 is not left for want of a step. Refused where a border vertex would drop
+  /// below its lowest valence, where the merged face would visit a vertex twice, or
+  /// where it would fold over. Calls `made(f)` for each merged quad f.
+  template <class MadeFace>
+  std::size_t remove_doublets(MadeFace made)
   {
-    std::vector<vertex_descriptor> doublets;
+    std::vector<vertex_descriptor> doublets; // in vertex order, then as they appear
     for(vertex_descriptor v : vertices(mesh_))
       if(valence(v) == 2 && !on_border(v))
         doublets.push_back(v);
     std::size_t removed = 0;
-    for(vertex_descriptor v : doublets) {
+    for(std::size_t k = 0; k < doublets.size(); ++k) { // grows: each step removes a face, so it ends
       Doublet d;
-      if(!find_doublet(v, d) || !merged_doublet_turns_like_before(d))
+      if(!find_doublet(doublets[k], d, true) || !merged_doublet_turns_like_before(d))
         continue;
+      const vertex_descriptor a = target(d.e1, mesh_), b = target(d.e2, mesh_);
+      const face_descriptor merged = face(d.o2, mesh_);
       dissolve(d);
+      made(merged);
       ++removed;
+      for(vertex_descriptor w : {a, b})
+        if(valence(w) == 2 && !on_border(w))
+          doublets.push_back(w);
     }
     return removed;
+  }
+
+  std::size_t remove_doublets()
+  {
+    return remove_doublets([](face_descriptor) {});
   }
 
   /// Removes the elements of the collapsed quads. Deferred to the end of the run: a
