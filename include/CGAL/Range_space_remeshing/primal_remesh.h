@@ -48,9 +48,9 @@ Statistics primal_remesh_impl(const TriangleMesh& tm, PolygonMesh& out, const Na
   return emptied_on_cancel(out, [&] {
     return with_sizing_field(tm, np_in, [&](const auto& np) { return emptied_on_failure(out, [&] {
       remove_all_elements(out);
-      const double h = cell_size_of(tm, np);
       if(target == 0)
-        return primal_remesh_at(h, tm, out, np, np_out, inspect, progress, tag);
+        return primal_remesh_at(cell_size_of(tm, np), tm, out, np, np_out, inspect, progress, tag);
+      const double h = first_cell_size_for_count(tm, np, target);
       Statistics stats;
       bool refine_around_defects = true;
       search_then_refine_around_defects(h, target, refine_around_defects, [&](double h_try) {
@@ -128,9 +128,12 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
                         f over the input's vertices (a pass over them, even in the seeded mode)}
     \cgalParamNEnd
     \cgalParamNBegin{number_of_target_vertices}
-      \cgalParamDescription{the number of vertices wanted in `out`: the cell size is searched (from
-                            `grid_spacing` or its default) so that the output has this many within 10%,
-                            in at most 12 runs}
+      \cgalParamDescription{the number of vertices wanted in `out`: the cell size is searched so that
+                            the output has this many within 10%, in at most 12 runs, from
+                            `grid_spacing` or its default; unless the mapped triangles would meet
+                            more than four times or less than a quarter as many cells there (by
+                            the areas of their projections on the coordinate planes of the range
+                            space): then from the size where they would meet that many}
       \cgalParamType{std::size_t}
       \cgalParamDefault{none: the cell size is used as given}
       \cgalParamExtra{`Remeshing_error` of kind `TARGET_NOT_REACHED` if no cell size tried gives the count}

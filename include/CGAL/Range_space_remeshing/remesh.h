@@ -327,7 +327,7 @@ Remesh_statistics remesh_impl(const TriangleMesh& tm, QuadMesh& quads, const Nam
   return emptied_on_cancel(quads, [&] {
     return with_sizing_field(tm, np_in, [&](const auto& np) { return emptied_on_failure(quads, [&] {
       remove_all_elements(quads);
-      const double h = cell_size_of(tm, np);
+      const double h = target == 0 ? cell_size_of(tm, np) : first_cell_size_for_count(tm, np, target);
       Remesh_statistics stats;
       if(target == 0)
         stats = remesh_keeping_topology<ConcurrencyTag>(h, tm, quads, np, np_out, improvement, progress);
@@ -377,9 +377,12 @@ empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
       \cgalParamDefault{`default_relative_cell_size` (1%) of the diagonal of the mapped input's bounding box}
     \cgalParamNEnd
     \cgalParamNBegin{number_of_target_vertices}
-      \cgalParamDescription{the number of vertices wanted in `quads`: the cell size is searched (from
-                            `grid_spacing` or its default) so that the output has this many within 10%,
-                            in at most 12 runs of the pipeline}
+      \cgalParamDescription{the number of vertices wanted in `quads`: the cell size is searched so that
+                            the output has this many within 10%, in at most 12 runs of the pipeline, from
+                            `grid_spacing` or its default; unless the mapped triangles would meet
+                            more than four times or less than a quarter as many cells there (by
+                            the areas of their projections on the coordinate planes of the range
+                            space): then from the size where they would meet that many}
       \cgalParamType{std::size_t}
       \cgalParamDefault{none: the cell size is used as given}
       \cgalParamExtra{`Remeshing_error` of kind `TARGET_NOT_REACHED` if no cell size tried gives the count}

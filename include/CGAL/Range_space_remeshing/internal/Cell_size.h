@@ -136,10 +136,38 @@ inline bool is_near_target(std::size_t count, std::size_t target)
   return std::abs(n - double(target)) <= target_tolerance * double(target);
 }
 
+/// The cell sizes known to give too many vertices (up to `too_fine`) and too few (from
+/// `too_coarse` on), as far as the runs tell: the count falls with the size, but not
+/// strictly, so the two may cross; then they bound nothing.
+struct Cell_size_bracket
+{
+  double too_fine = 0, too_coarse = std::numeric_limits<double>::infinity();
+
+  void add(double h, bool too_many)
+  {
+    if(too_many)
+      too_fine = (std::max)(too_fine, h);
+    else
+      too_coarse = (std::min)(too_coarse, h);
+  }
+
+  /// `h`, or the middle (in log scale) of the bracket where `h` is not inside it.
+  double kept_inside(double h) const
+  {
+    const bool bounded = too_fine > 0 && too_coarse < std::numeric_limits<double>::infinity() && too_fine < too_coarse;
+    return !bounded || (h > too_fine && h < too_coarse) ? h : std::sqrt(too_fine * too_coarse);
+  }
+};
+
 /// Searches a cell size, from `h`, whose run gives `target` output vertices within
 /// `target_tolerance`: the count goes roughly as h^-2, refined by secant steps in
-/// log-log scale. `run(h)` does a run and returns its vertex count; the last run is the
-/// one found. A cell size refused as too small (the output cap) is doubled, and no
+/// log-log scale. The count is not smooth in h (a row of cells more or less, pieces
+/// dropped or kept): where it jumps across the target, the secant steps go back and
+/// forth over the jump. So the steps stay inside the bracket of the largest size that
+/// gave too many vertices and the smallest that gave too few, and one that would leave
+/// it halves it (in log scale) instead; not with `keeps_topology`, whose refinements
+/// make a coarser size give more vertices. `run(h)` does a run and returns its vertex
+/// count; the last run is the one found. A cell size refused as too small (the output cap) is doubled, and no
 /// later step goes back to it: they land between it and the last size that ran, so a
 /// target just below the cap is found. `keeps_topology`: the runs refine the cell size
 /// until the topology is kept (said if the count stays above).
@@ -148,6 +176,7 @@ double search_cell_size(double h, std::size_t target, const Run& run, bool keeps
 {
   double previous_h = 0, previous_log_n = 0, n = 0;
   double capped = 0; // the largest cell size refused by the output cap
+  Cell_size_bracket bracket;
   const double log_target = std::log(double(target));
   for(int attempt = 0; attempt < maximum_target_runs; ++attempt) {
     try {
@@ -162,6 +191,8 @@ double search_cell_size(double h, std::size_t target, const Run& run, bool keeps
     }
     if(is_near_target(std::size_t(n), target))
       return h;
+    if(!keeps_topology) // where runs refine until the topology is kept, a coarser size may give more
+      bracket.add(h, n > double(target));
     double slope = -2; // d log n / d log h
     if(previous_h > 0) {
       const double s = (std::log(n) - previous_log_n) / (std::log(h) - std::log(previous_h));
@@ -173,6 +204,7 @@ double search_cell_size(double h, std::size_t target, const Run& run, bool keeps
     h = std::exp(std::log(h) + (log_target - std::log(n)) / slope);
     if(h <= capped) // back to a size the cap refused: halfway (in log scale) from the last
       h = std::sqrt(capped * (std::max)(previous_h, capped));
+    h = bracket.kept_inside(h);
   }
   const bool kept_finer = keeps_topology && n > double(target);
   std::ostringstream capped_note;
@@ -212,6 +244,43 @@ double search_then_refine_around_defects(double h, std::size_t target, bool& ref
   return search_cell_size(h, target, run, keeps_topology);
 }
 
+/// The cell size whose remesh of `tm` under f has about `count` vertices, as f's
+/// triangles tell: a flat piece of the mapped surface meets about S / h^2 cells of size
+/// h, where S is the sum of the areas of its projections on the D(D - 1) / 2 coordinate
+/// planes (for a plane in R^3, its area times |n_x| + |n_y| + |n_z|), and the remesh
+/// has about one vertex a cell it meets. Where the search of `number_of_target_vertices`
+/// starts when the size given would be far off: the default cell size, made for the
+/// identity, gives ten to twenty times the vertices asked for with the normal maps, and
+/// that first run cost more than all the others. 0 if f's triangles have no area.
+template <class TriangleMesh, class RangeMap>
+double cell_size_for_count(const TriangleMesh& tm, const RangeMap& range_map, std::size_t count)
+{
+  constexpr int D = range_dimension<RangeMap>();
+  auto mapped = [&](auto v) { // copied: a map may hand out a buffer that the next call overwrites
+    std::array<double, D> x;
+    const auto& value = get(range_map, v);
+    for(int q = 0; q < D; ++q)
+      x[q] = double(value[q]);
+    return x;
+  };
+  double projected_areas = 0; // twice
+  for(auto f : faces(tm)) {
+    const auto h = halfedge(f, tm);
+    const std::array<double, D> a = mapped(source(h, tm)), b = mapped(target(h, tm)),
+                                c = mapped(target(next(h, tm), tm));
+    std::array<double, D> u, w;
+    for(int q = 0; q < D; ++q) {
+      u[q] = b[q] - a[q];
+      w[q] = c[q] - a[q];
+    }
+    for(int i = 0; i < D; ++i)
+      for(int j = i + 1; j < D; ++j)
+        projected_areas += std::abs(u[i] * w[j] - u[j] * w[i]);
+  }
+  const double h = std::sqrt(projected_areas / 2 / double((std::max)(count, std::size_t(1))));
+  return std::isfinite(h) ? h : 0;
+}
+
 /// The cell size of `np`: `grid_spacing`, or the default relative to the mapped input.
 template <class TriangleMesh, class NamedParameters>
 double cell_size_of(const TriangleMesh& tm, const NamedParameters& np)
@@ -221,6 +290,18 @@ double cell_size_of(const TriangleMesh& tm, const NamedParameters& np)
     return default_cell_size(tm, range_map_of(tm, np));
   else
     return double(get_parameter(np, CGAL::internal_np::grid_spacing));
+}
+
+/// Where the search of `number_of_target_vertices` starts: the cell size of `np`
+/// (`grid_spacing` or the default), unless by `cell_size_for_count()` (which maps every
+/// vertex once, as the default cell size does) it would give more than four times or
+/// less than a quarter of the count: then the size that function gives.
+template <class TriangleMesh, class NamedParameters>
+double first_cell_size_for_count(const TriangleMesh& tm, const NamedParameters& np, std::size_t target)
+{
+  const double h = cell_size_of(tm, np);
+  const double estimate = cell_size_for_count(tm, range_map_of(tm, np), target);
+  return estimate > 0 && (h < estimate / 2 || h > 2 * estimate) ? estimate : h;
 }
 
 } // namespace internal
