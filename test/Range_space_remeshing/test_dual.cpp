@@ -450,10 +450,12 @@ void test_collapse_on_other_meshes()
   // then (x, b, y, a) by b - v - a. v is a doublet beside a of valence 3: dissolving v
   // leaves a a doublet, dissolved next, and the quad is whole again (v was kept before)
   Mesh with_row = cube;
+  Mesh::Vertex_index row_a;
   {
     const auto to_x = halfedge(middle_quad(with_row), with_row);
     const auto b = target(next(to_x, with_row), with_row);
     const auto a = split_with_midpoint(with_row, to_x, next(next(to_x, with_row), with_row));
+    row_a = a;
     for(auto to_a : CGAL::halfedges_around_target(a, with_row)) {
       const auto to_b = next(next(to_a, with_row), with_row);
       if(!is_border(to_a, with_row) && target(to_b, with_row) == b) {
@@ -463,6 +465,14 @@ void test_collapse_on_other_meshes()
     }
   }
   CHECK_EQ(num_faces(with_row), num_faces(cube) + 2);
+  // a constrained may not become a doublet: v stays, rather than leave a doublet that
+  // cannot go (it went, and a was left, before)
+  Mesh row_held = with_row;
+  auto held = row_held.add_property_map<Mesh::Vertex_index, bool>("v:held", false).first;
+  held[row_a] = true;
+  const auto row_kept = RSR::collapse_quads(row_held, params::vertex_is_constrained_map(held));
+  CHECK_EQ(row_kept.removed_doublets, std::size_t(0));
+  CHECK_EQ(num_faces(row_held), num_faces(cube) + 2);
   const auto row_dissolved = RSR::collapse_quads(with_row);
   CHECK_EQ(row_dissolved.removed_doublets, std::size_t(2));
   CHECK_EQ(num_faces(with_row), num_faces(cube));

@@ -4,6 +4,7 @@
 // argv[1]: the folder holding CGAL's elephant.off.
 #include "test_support.h"
 
+#include <CGAL/Range_space_remeshing/Identity_range_map.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
 #include <CGAL/Range_space_remeshing/copy_in_spatial_order.h>
 #include <CGAL/Range_space_remeshing/internal/Cell_size.h>
@@ -119,6 +120,37 @@ void test_target_across_a_jump()
   std::cout << "target across a jump: " << tried.size() << " runs, cell size " << h << std::endl;
   CHECK(h >= 0.99 && h < 0.995);
   CHECK(tried.size() <= std::size_t(RSR::internal::maximum_target_runs));
+}
+
+// Where the search starts: the projected areas of a unit square in the plane z = 0
+// are 1 (on xy) and 0, so 100 cells of 0.1 cover it; a square without area, or one
+// whose areas overflow, gives no size; a grid_spacing within a factor 2 of the
+// estimate is kept, one further off is not.
+void test_first_cell_size()
+{
+  auto square = [](double side, double z_of_x) {
+    Mesh m;
+    const auto a = m.add_vertex(Point(0, 0, 0)), b = m.add_vertex(Point(side, 0, z_of_x * side)),
+               c = m.add_vertex(Point(side, side, z_of_x * side)), d = m.add_vertex(Point(0, side, 0));
+    m.add_face(a, b, c);
+    m.add_face(a, c, d);
+    return m;
+  };
+  const Mesh unit = square(1, 0);
+  const RSR::Identity_range_map f(get(CGAL::vertex_point, unit));
+  CHECK(std::abs(RSR::internal::cell_size_for_count(unit, f, 100) - 0.1) < 1e-12);
+  Mesh flat = unit; // all four corners on a line
+  for(auto v : vertices(flat))
+    flat.point(v) = Point(flat.point(v).x() + flat.point(v).y(), 0, 0);
+  CHECK_EQ(RSR::internal::cell_size_for_count(flat, RSR::Identity_range_map(get(CGAL::vertex_point, flat)), 100), 0.);
+  const Mesh huge = square(1e200, 0);
+  CHECK_EQ(RSR::internal::cell_size_for_count(huge, RSR::Identity_range_map(get(CGAL::vertex_point, huge)), 100), 0.);
+  CHECK_EQ(RSR::internal::first_cell_size_for_count(unit, RSR::parameters::grid_spacing(0.15), 100), 0.15);
+  CHECK(std::abs(RSR::internal::first_cell_size_for_count(unit, RSR::parameters::grid_spacing(0.5), 100) - 0.1) <
+        1e-12);
+  CHECK_EQ(RSR::internal::first_cell_size_for_count(
+               unit, RSR::parameters::grid_spacing(0.5).seeding_method(RSR::Seeding_method::SEEDED), 100),
+           0.5);
 }
 
 void test_target_vertices(const Mesh& elephant)
@@ -427,6 +459,7 @@ int main(int argc, char** argv)
   test_chains(sphere);
   test_default_cell_size(elephant);
   test_target_across_a_jump();
+  test_first_cell_size();
   test_target_vertices(elephant);
   test_progress(elephant);
   test_cancel(elephant);

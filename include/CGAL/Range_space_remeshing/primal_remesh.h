@@ -129,11 +129,13 @@ and counted in `Statistics::uncrossed_border_cycles` by the complete scan.
     \cgalParamNEnd
     \cgalParamNBegin{number_of_target_vertices}
       \cgalParamDescription{the number of vertices wanted in `out`: the cell size is searched so that
-                            the output has this many within 10%, in at most 12 runs, from
-                            `grid_spacing` or its default; unless the mapped triangles would meet
-                            more than four times or less than a quarter as many cells there (by
-                            the areas of their projections on the coordinate planes of the range
-                            space): then from the size where they would meet that many}
+                            the output has this many within 10%, in at most 12 runs (twice
+                            as many and one more with `refine_around_defects`), from `grid_spacing`
+                            or its default; unless the mapped triangles would meet more than four
+                            times or less than a quarter as many cells there (by the areas of
+                            their projections on the coordinate planes of the range space; not
+                            with the seeded traversal): then from the size where they would meet
+                            that many}
       \cgalParamType{std::size_t}
       \cgalParamDefault{none: the cell size is used as given}
       \cgalParamExtra{`Remeshing_error` of kind `TARGET_NOT_REACHED` if no cell size tried gives the count}

@@ -60,11 +60,13 @@ involved, and only if the result stays a valid manifold mesh:
 - a and c are not constrained (`vertex_is_constrained_map`).
 
 Before the collapses, and again after them, the doublets go: a vertex of valence 2
-inside the surface, whose two quads share two edges, is removed and its two quads
-become one (unless a neighbour on the border would drop below valence 2, the merged
-quad would visit a vertex twice, or it would face against the two). A neighbour of
-valence 3 this leaves with valence 2 is a doublet in turn and goes next. The second
-sweep takes those the first had to leave and the passes' operations since freed.
+inside the surface, whose two faces are distinct quads sharing two edges, is removed
+and its two quads become one (unless it is constrained, a neighbour on the border
+would drop below valence 2, the merged quad would visit a vertex twice, or it would
+face against the two). A neighbour of valence 3 this leaves with valence 2 (if it is
+inside, not constrained, and its third face is a quad) is a doublet in turn and is
+tried next. The second sweep takes those the first had to leave and the passes'
+operations since freed.
 
 The collapses are interleaved with edge rotations (unless `do_flip` is `false`): the
 edge u-v between the quads (u, v, f1, f2) and (v, u, g1, g2) turns to join f1 and g1

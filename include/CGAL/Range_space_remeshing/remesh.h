@@ -378,11 +378,13 @@ empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
     \cgalParamNEnd
     \cgalParamNBegin{number_of_target_vertices}
       \cgalParamDescription{the number of vertices wanted in `quads`: the cell size is searched so that
-                            the output has this many within 10%, in at most 12 runs of the pipeline, from
-                            `grid_spacing` or its default; unless the mapped triangles would meet
-                            more than four times or less than a quarter as many cells there (by
-                            the areas of their projections on the coordinate planes of the range
-                            space): then from the size where they would meet that many}
+                            the output has this many within 10%, in at most 12 runs of the pipeline (twice
+                            as many and one more with `refine_around_defects`), from `grid_spacing`
+                            or its default; unless the mapped triangles would meet more than four
+                            times or less than a quarter as many cells there (by the areas of
+                            their projections on the coordinate planes of the range space; not
+                            with the seeded traversal): then from the size where they would meet
+                            that many}
       \cgalParamType{std::size_t}
       \cgalParamDefault{none: the cell size is used as given}
       \cgalParamExtra{`Remeshing_error` of kind `TARGET_NOT_REACHED` if no cell size tried gives the count}

@@ -165,17 +165,21 @@ struct Cell_size_bracket
 /// dropped or kept): where it jumps across the target, the secant steps go back and
 /// forth over the jump. So the steps stay inside the bracket of the largest size that
 /// gave too many vertices and the smallest that gave too few, and one that would leave
-/// it halves it (in log scale) instead; not with `keeps_topology`, whose refinements
-/// make a coarser size give more vertices. `run(h)` does a run and returns its vertex
-/// count; the last run is the one found. A cell size refused as too small (the output cap) is doubled, and no
-/// later step goes back to it: they land between it and the last size that ran, so a
-/// target just below the cap is found. `keeps_topology`: the runs refine the cell size
-/// until the topology is kept (said if the count stays above).
+/// it halves it (in log scale) instead; only where `count_falls_with_size`: not with
+/// `keeps_topology`, whose refinements make a coarser size give more vertices, nor with
+/// the refinement around defects, whose lenses do the same. `run(h)` does a run and
+/// returns its vertex count; the last run is the one found. A cell size refused as too
+/// small (the output cap) is doubled, and no later step goes back to it: they land
+/// between it and the last size that ran, so a target just below the cap is found.
+/// `keeps_topology`: the runs refine the cell size until the topology is kept (said if
+/// the count stays above).
 template <class Run>
-double search_cell_size(double h, std::size_t target, const Run& run, bool keeps_topology)
+double search_cell_size(double h, std::size_t target, const Run& run, bool keeps_topology,
+                        bool count_falls_with_size = true)
 {
   double previous_h = 0, previous_log_n = 0, n = 0;
   double capped = 0; // the largest cell size refused by the output cap
+  const bool bracketed = count_falls_with_size && !keeps_topology;
   Cell_size_bracket bracket;
   const double log_target = std::log(double(target));
   for(int attempt = 0; attempt < maximum_target_runs; ++attempt) {
@@ -185,13 +189,15 @@ double search_cell_size(double h, std::size_t target, const Run& run, bool keeps
       if(error.kind() != Remeshing_error::Kind::OUTPUT_TOO_LARGE)
         throw;
       capped = (std::max)(capped, h);
-      h = previous_h > capped ? std::sqrt(capped * previous_h) : 2 * h;
+      if(bracketed)
+        bracket.add(h, true);
+      h = bracket.kept_inside(previous_h > capped ? std::sqrt(capped * previous_h) : 2 * h);
       previous_h = 0;
       continue;
     }
     if(is_near_target(std::size_t(n), target))
       return h;
-    if(!keeps_topology) // where runs refine until the topology is kept, a coarser size may give more
+    if(bracketed)
       bracket.add(h, n > double(target));
     double slope = -2; // d log n / d log h
     if(previous_h > 0) {
@@ -241,7 +247,7 @@ double search_then_refine_around_defects(double h, std::size_t target, bool& ref
     return h;
   if(is_near_target((std::max)(run(h), std::size_t(1)), target))
     return h;
-  return search_cell_size(h, target, run, keeps_topology);
+  return search_cell_size(h, target, run, keeps_topology, false);
 }
 
 /// The cell size whose remesh of `tm` under f has about `count` vertices, as f's
@@ -293,13 +299,17 @@ double cell_size_of(const TriangleMesh& tm, const NamedParameters& np)
 }
 
 /// Where the search of `number_of_target_vertices` starts: the cell size of `np`
-/// (`grid_spacing` or the default), unless by `cell_size_for_count()` (which maps every
-/// vertex once, as the default cell size does) it would give more than four times or
-/// less than a quarter of the count: then the size that function gives.
+/// (`grid_spacing` or the default), unless by `cell_size_for_count()` it would give
+/// more than four times or less than a quarter of the count: then the size that
+/// function gives. That function evaluates f at the corners of every face: not with the
+/// seeded traversal, which maps only the faces the arcs cross.
 template <class TriangleMesh, class NamedParameters>
 double first_cell_size_for_count(const TriangleMesh& tm, const NamedParameters& np, std::size_t target)
 {
   const double h = cell_size_of(tm, np);
+  if(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::seeding_method),
+                                        Seeding_method::COMPLETE_SCAN) == Seeding_method::SEEDED)
+    return h;
   const double estimate = cell_size_for_count(tm, range_map_of(tm, np), target);
   return estimate > 0 && (h < estimate / 2 || h > 2 * estimate) ? estimate : h;
 }

@@ -151,9 +151,9 @@ private:
         return get(face_index_, f) < get(face_index_, g);
       });
     }
-    // the passes' collapses and rotations change valences around the doublets the
-    // first sweep had to leave (a neighbour of valence 3 on the border, a merged quad
-    // that would fold): they may go now
+    // the passes' collapses and rotations change the valences and places around the
+    // doublets the first sweep had to leave (a border corner of valence 2 beside one, a
+    // merged quad that would fold): they may go now
     stats.removed_doublets += remove_doublets();
     progress_->report(Remeshing_stage::COLLAPSE, 1);
     remove_unlinked_elements();

@@ -323,8 +323,8 @@ protected:
 
   /// Whether v is a doublet whose two faces are distinct quads that can become one:
   /// a and b distinct and keeping their lowest valence, x and y distinct, v free.
-  /// With `cascade`, a or b inside the surface may drop from 3 to 2: it becomes a
-  /// doublet in turn, which the caller dissolves next.
+  /// With `cascade`, a or b inside the surface, free, and whose third face is a quad
+  /// may drop from 3 to 2: it becomes a doublet in turn, which the caller tries next.
   bool find_doublet(vertex_descriptor v, Doublet& d, bool cascade = false) const
   {
     if(valence(v) != 2 || on_border(v) || get(constrained_, v))
@@ -340,11 +340,15 @@ protected:
     if(f == g || !is_quad(f) || !is_quad(g))
       return false;
     const vertex_descriptor a = target(d.e1, mesh_), b = target(d.e2, mesh_);
-    auto keeps_its_valence = [&](vertex_descriptor w) {
-      return valence(w) > lowest_valence(w) || (cascade && !on_border(w) && valence(w) == 3);
+    // w's third face is across its edge to the corner after it in F (a) or G (b)
+    auto keeps_its_valence = [&](vertex_descriptor w, halfedge_descriptor from_w) {
+      const halfedge_descriptor across = opposite(from_w, mesh_);
+      return valence(w) > lowest_valence(w) || (cascade && !on_border(w) && !get(constrained_, w) &&
+                                                valence(w) == 3 && !is_border(across, mesh_) &&
+                                                is_quad(face(across, mesh_)));
     };
-    return a != b && target(next(d.e1, mesh_), mesh_) != target(next(d.e2, mesh_), mesh_) && keeps_its_valence(a) &&
-           keeps_its_valence(b);
+    return a != b && target(next(d.e1, mesh_), mesh_) != target(next(d.e2, mesh_), mesh_) &&
+           keeps_its_valence(a, next(d.e1, mesh_)) && keeps_its_valence(b, next(d.e2, mesh_));
   }
 
   /// Whether the doublet's merged quad (a, x, b, y) turns like its two quads together.
@@ -386,13 +390,12 @@ protected:
 
   /// Dissolves the vertices of valence 2 (doublets: two quads sharing two edges, as
   /// the dual leaves where it joins faces) whose two faces are distinct quads: the two
-  /// become one quad. A neighbour of valence 3 that this leaves with 2 is dissolved in
-  /// turn (a row of them goes one by one), so that a doublet next to a vertex of
-  /// valence 3 is not left for want of a step. Refused where a border vertex would drop
-  /// below its lowest valence, where the merged face would visit a vertex twice, or
-  /// where it would fold over. Calls `made(f)` for each merged quad f.
-  template <class MadeFace>
-  std::size_t remove_doublets(MadeFace made)
+  /// become one quad. A neighbour of valence 3 that this leaves with 2 is tried in turn
+  /// (a row of them goes one by one), so that a doublet next to a vertex of valence 3
+  /// is not left for want of a step. Refused where a border vertex would drop below
+  /// its lowest valence, where a constrained vertex would be a doublet, where the merged
+  /// face would visit a vertex twice, or where it would fold over.
+  std::size_t remove_doublets()
   {
     std::vector<vertex_descriptor> doublets; // in vertex order, then as they appear
     for(vertex_descriptor v : vertices(mesh_))
@@ -403,21 +406,16 @@ protected:
       Doublet d;
       if(!find_doublet(doublets[k], d, true) || !merged_doublet_turns_like_before(d))
         continue;
-      const vertex_descriptor a = target(d.e1, mesh_), b = target(d.e2, mesh_);
-      const face_descriptor merged = face(d.o2, mesh_);
+      std::array<vertex_descriptor, 2> ends = {target(d.e1, mesh_), target(d.e2, mesh_)};
+      if(index(ends[1]) < index(ends[0])) // the order of the mesh's vertices, not of its halfedges
+        std::swap(ends[0], ends[1]);
       dissolve(d);
-      made(merged);
       ++removed;
-      for(vertex_descriptor w : {a, b})
+      for(vertex_descriptor w : ends)
         if(valence(w) == 2 && !on_border(w))
           doublets.push_back(w);
     }
     return removed;
-  }
-
-  std::size_t remove_doublets()
-  {
-    return remove_doublets([](face_descriptor) {});
   }
 
   /// Removes the elements of the collapsed quads. Deferred to the end of the run: a
