@@ -14,6 +14,7 @@
 #include <CGAL/Range_space_remeshing/Range_space_traits.h>
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
 #include <CGAL/Range_space_remeshing/Remeshing_stage.h>
+#include <CGAL/Range_space_remeshing/Sized_range_map.h>
 #include <CGAL/Range_space_remeshing/Statistics.h>
 #include <CGAL/Range_space_remeshing/Tangent_planes.h>
 #include <CGAL/Range_space_remeshing/Topology_defect.h>
@@ -27,6 +28,7 @@
 #include <CGAL/Range_space_remeshing/quad_collapse.h>
 #include <CGAL/Range_space_remeshing/relax_on_tangent_planes.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
+#include <CGAL/Range_space_remeshing/smooth_vertex_normals.h>
 #include <CGAL/Range_space_remeshing/version.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -70,6 +72,9 @@ int main()
   RSR::copy_in_spatial_order(icosahedron, ordered);
   const auto stats = RSR::remesh(ordered, quads, CGAL::parameters::grid_spacing(0.2));
   const auto f = RSR::make_position_normal_range_map(ordered, 1.0, 0.5);
+  auto normals = ordered.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:normal").first;
+  RSR::compute_vertex_normals(ordered, normals);
+  RSR::smooth_vertex_normals(ordered, normals, RSR::parameters::number_of_iterations(std::size_t(2)));
   const auto stats_position_normal =
       RSR::remesh(ordered, quads_position_normal, RSR::parameters::range_map(f).grid_spacing(0.2));
 

@@ -12,6 +12,7 @@
 #include <CGAL/Range_space_remeshing/Sized_range_map.h>
 #include <CGAL/Range_space_remeshing/View_range_map.h>
 #include <CGAL/Range_space_remeshing/insert_crease_triangles.h>
+#include <CGAL/Range_space_remeshing/smooth_vertex_normals.h>
 
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <boost/property_map/function_property_map.hpp>
@@ -481,6 +482,91 @@ void test_extreme_normals()
   CHECK(normalized({{0, 0, 0}}) == zero);
 }
 
+/// `smooth_vertex_normals()`: each round replaces a normal by the unit sum of its own
+/// and its neighbours', all read before any is written; a vanishing sum keeps the
+/// normal, a zero normal adds nothing, an isolated vertex keeps its own; on a sphere
+/// the averaged normals stay radial (within a degree after the program's 8 rounds).
+void test_smooth_vertex_normals()
+{
+  using Normal = std::array<double, 3>;
+  Mesh tetrahedron;
+  CGAL::make_tetrahedron(Point(1, 1, 1), Point(1, -1, -1), Point(-1, 1, -1), Point(-1, -1, 1), tetrahedron);
+  const auto lonely = tetrahedron.add_vertex(Point(5, 5, 5));
+  auto normals = tetrahedron.add_property_map<Mesh::Vertex_index, Normal>("v:test_normal").first;
+  auto set_all = [&](const Normal& n) {
+    for(auto v : vertices(tetrahedron))
+      normals[v] = n;
+  };
+  auto first = *vertices(tetrahedron).begin();
+  // every vertex sees all four: (1, 0, 0) + 3 (0, 0, 1), the same for each, normalised
+  set_all({{0, 0, 1}});
+  normals[first] = {{1, 0, 0}};
+  normals[lonely] = {{0, 1, 0}};
+  RSR::smooth_vertex_normals(tetrahedron, normals);
+  const double unit = 1 / std::sqrt(10.);
+  for(auto v : vertices(tetrahedron))
+    if(v != lonely) {
+      CHECK(std::abs(normals[v][0] - unit) < 1e-15 && normals[v][1] == 0 && std::abs(normals[v][2] - 3 * unit) < 1e-15);
+    }
+  CHECK(normals[lonely] == (Normal{{0, 1, 0}}));
+  // the outward normals of a regular tetrahedron sum to zero: each keeps its own
+  for(auto v : vertices(tetrahedron)) {
+    const Point& p = tetrahedron.point(v);
+    normals[v] = {{p.x() / std::sqrt(3.), p.y() / std::sqrt(3.), p.z() / std::sqrt(3.)}};
+  }
+  const Normal kept = normals[first];
+  RSR::smooth_vertex_normals(tetrahedron, normals, RSR::parameters::number_of_iterations(std::size_t(3)));
+  CHECK(normals[first] == kept);
+  // a zero normal adds nothing, and gets its neighbours' mean
+  set_all({{0, 0, 1}});
+  normals[first] = {{0, 0, 0}};
+  RSR::smooth_vertex_normals(tetrahedron, normals);
+  CHECK(normals[first] == (Normal{{0, 0, 1}}));
+  // no rounds: unchanged; too many: refused, unchanged
+  normals[first] = {{0.6, 0, 0.8}};
+  RSR::smooth_vertex_normals(tetrahedron, normals, RSR::parameters::number_of_iterations(std::size_t(0)));
+  CHECK(normals[first] == (Normal{{0.6, 0, 0.8}}));
+  bool refused = false;
+  try {
+    RSR::smooth_vertex_normals(tetrahedron, normals, RSR::parameters::number_of_iterations(std::size_t(2000000)));
+  } catch(const RSR::Remeshing_error& e) {
+    refused = e.kind() == RSR::Remeshing_error::Kind::BAD_PARAMETER;
+  }
+  CHECK(refused);
+  CHECK(normals[first] == (Normal{{0.6, 0, 0.8}}));
+  // a sphere: radial normals stay radial, CGAL vectors as values
+  Mesh sphere = make_sphere(1.0, 3);
+  auto vectors = sphere.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:test_vector").first;
+  RSR::compute_vertex_normals(sphere, vectors);
+  RSR::smooth_vertex_normals(sphere, vectors, RSR::parameters::number_of_iterations(std::size_t(8)));
+  double worst = 0;
+  for(auto v : vertices(sphere)) {
+    const K::Vector_3 radial = sphere.point(v) - CGAL::ORIGIN;
+    const double cosine = vectors[v] * radial / std::sqrt(radial.squared_length() * vectors[v].squared_length());
+    worst = std::max(worst, std::acos(std::min(1., cosine)) * 180 / CGAL_PI);
+  }
+  std::cout << "averaged normals, sphere, 8 rounds: largest angle to the radius " << worst << " degrees" << std::endl;
+  CHECK(worst < 1);
+  // a cube opened along its edges: the zero-area crease triangles join no normals, and
+  // each side keeps its face's (averaged across the edges, they would turn)
+  Mesh opened;
+  RSR::insert_crease_triangles(make_lattice_cube(3), opened, 30.0);
+  auto sides = opened.add_property_map<Mesh::Vertex_index, Normal>("v:test_normal").first;
+  RSR::compute_vertex_normals(opened, sides);
+  std::vector<Normal> computed;
+  for(auto v : vertices(opened))
+    computed.push_back(sides[v]);
+  RSR::smooth_vertex_normals(opened, sides, RSR::parameters::number_of_iterations(std::size_t(8)));
+  std::size_t turned = 0, k = 0;
+  for(auto v : vertices(opened)) {
+    const Normal& n = sides[v];
+    const Normal& c = computed[k++];
+    turned += std::abs(n[0] - c[0]) + std::abs(n[1] - c[1]) + std::abs(n[2] - c[2]) > 1e-12;
+  }
+  std::cout << "averaged normals, opened cube: " << turned << " of " << num_vertices(opened) << " turned" << std::endl;
+  CHECK_EQ(turned, std::size_t(0));
+}
+
 /// `compute_vertex_normals()` (one pass over the faces) gives the lazy map's normals:
 /// both weightings, zero-area crease triangles, an open patch, extreme scales,
 /// `std::array` and CGAL vector values; and the remesh with either map is the same.
@@ -900,5 +986,6 @@ int main()
   test_crease_triangles();
   test_extreme_normals();
   test_one_pass_normals();
+  test_smooth_vertex_normals();
   return report("test_range_maps");
 }

@@ -116,7 +116,8 @@ const char* way_out(RSR::Remeshing_error::Kind kind)
 /// does a refinement that cannot finish, with the unit of its cell sizes.
 RSR::Remesh_statistics remesh_with_progress(const Mesh& input, double h, Options& options, Mesh& output)
 {
-  const Input_normals normals(input, options.map->uses_normals && !options.seeded);
+  const Input_normals normals(input, options.map->uses_normals && !options.seeded,
+                              options.map->uses_normals ? options.normal_smoothing : 0);
   Progress_line progress(options);
   options.progress = &progress;
   RSR::Remesh_statistics stats;

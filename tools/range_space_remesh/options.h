@@ -72,6 +72,14 @@ inline const char* const usage =
     "                        per unit as a lateral step at the target's distance\n"
     "  --normal-weight W     weight of the normal in the position-normal maps\n"
     "                        (default 0.1; 0: the identity's uniform remesh)\n"
+    "  --normal-smoothing K  the maps with normals read each vertex's normal averaged\n"
+    "                        K times with its neighbours' (default 8; 0: the\n"
+    "                        normals of the faces around it only): the bound on the\n"
+    "                        normal part holds for these normals. Averaging drops\n"
+    "                        the steps of the normal between a scan's or a coarse\n"
+    "                        mesh's facets, which no cell resolves and which change\n"
+    "                        the topology. Needs every vertex's normal: 0 with\n"
+    "                        --seeded unless given\n"
     "  --sharp-angle DEG     open the creases (dihedral angle above DEG) with\n"
     "                        zero-area triangles first, so that the normal maps put\n"
     "                        arcs along them (and, unless --placement is given,\n"
@@ -143,6 +151,7 @@ struct Options
   const Range_map* map = &default_range_map();
   double cell_size = 0.01;
   double normal_weight = 0.1;
+  int normal_smoothing = -1; // negative: the default (0 with --seeded)
   double color_weight = -1; // negative: the map's default
   double sharp_angle = -1;   // negative: no crease preprocessing
   double length_unit = 1; // the bounding-box diagonal in relative mode
@@ -163,6 +172,9 @@ struct Options
   bool quiet = false;
   class Progress_line* progress = nullptr; // set by main()
 };
+
+/// --normal-smoothing's default: rounds of averaging each normal with its neighbours'.
+constexpr int default_normal_smoothing = 8;
 
 /// --time-limit's default with --preserve-topology, in seconds.
 constexpr double preserve_topology_time_limit = 60;
@@ -217,6 +229,8 @@ inline void refuse_ignored_options(const Options& options, const std::set<std::s
     fail("--camera is for --map view; the map " + map + " has no camera");
   if(given.count("--normal-weight") && !options.map->uses_normal_weight)
     fail("--normal-weight is for the maps with normals (position-normal...); the map " + map + " has none");
+  if(given.count("--normal-smoothing") && !options.map->uses_normals)
+    fail("--normal-smoothing is for the maps with normals (position-normal...); the map " + map + " has none");
   if(given.count("--color-weight") && !options.map->uses_colors)
     fail("--color-weight is for the maps with colours (position-normal-color...); the map " + map + " has none");
   if(given.count("--preserve-topology") && given.count("--allow-topology-change"))
@@ -265,6 +279,11 @@ inline Options parse_arguments(int argc, char** argv)
       options.normal_weight = parse_number(arg, value());
       if(!(options.normal_weight >= 0) || options.normal_weight > 1e6)
         fail("--normal-weight must be between 0 and 10^6");
+    } else if(arg == "--normal-smoothing") {
+      const double k = parse_number(arg, value());
+      if(!(k >= 0) || k != std::floor(k) || k > 1000)
+        fail("--normal-smoothing expects an integer between 0 and 1000");
+      options.normal_smoothing = int(k);
     } else if(arg == "--cell-size") {
       options.cell_size = parse_number(arg, value());
       if(!(options.cell_size > 0))
@@ -334,6 +353,9 @@ inline Options parse_arguments(int argc, char** argv)
   options.output = positional[1];
   if(options.placement.empty())
     options.placement = options.sharp_angle >= 0 ? "sharp" : "qem";
+  // the seeded traversal reads only the normals of the vertices it reaches
+  if(options.normal_smoothing < 0)
+    options.normal_smoothing = options.seeded ? 0 : default_normal_smoothing;
   // each refinement of --preserve-topology can take longer than all before it
   if(options.preserve_topology && !given.count("--time-limit")) {
     options.time_limit = preserve_topology_time_limit;

@@ -18,6 +18,7 @@
 #include <CGAL/Range_space_remeshing/Color_range_maps.h>
 #include <CGAL/Range_space_remeshing/Gauss_range_map.h>
 #include <CGAL/Range_space_remeshing/Position_normal_range_map.h>
+#include <CGAL/Range_space_remeshing/smooth_vertex_normals.h>
 #include <CGAL/Range_space_remeshing/View_range_map.h>
 #include <CGAL/Range_space_remeshing/remesh.h>
 
@@ -95,8 +96,9 @@ RSR::Remesh_statistics run_with_vertex_values(const Mesh& input, const NamedPara
 
 /// The input's vertex normals for the normal-based maps: from a table computed in one
 /// pass over the faces for the complete scan, which maps every vertex (about ten times
-/// cheaper than reading each vertex's star on its own), lazily for --seeded, which
-/// maps only the vertices the arcs reach.
+/// cheaper than reading each vertex's star on its own), then averaged `smoothing`
+/// times over the neighbours (--normal-smoothing); lazily for --seeded, which maps
+/// only the vertices the arcs reach, unless they are averaged.
 class Input_normals
 {
 public:
@@ -105,13 +107,15 @@ public:
   using reference = value_type;
   using category = boost::readable_property_map_tag;
 
-  Input_normals(const Mesh& input, bool all_at_once) : lazy_(input)
+  Input_normals(const Mesh& input, bool all_at_once, int smoothing = 0) : lazy_(input)
   {
-    if(!all_at_once)
+    if(!all_at_once && smoothing == 0)
       return;
     table_ = std::make_shared<std::vector<value_type>>(input.num_vertices()); // removed ones included: indices
-    RSR::compute_vertex_normals(input, boost::make_iterator_property_map(
-                                           table_->begin(), get(boost::vertex_index, input)));
+    const auto table = boost::make_iterator_property_map(table_->begin(), get(boost::vertex_index, input));
+    RSR::compute_vertex_normals(input, table);
+    if(smoothing > 0)
+      RSR::smooth_vertex_normals(input, table, RSR::parameters::number_of_iterations(std::size_t(smoothing)));
   }
 
   friend value_type get(const Input_normals& map, key_type v)

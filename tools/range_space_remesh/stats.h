@@ -77,6 +77,7 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
   j["map"] = options.map->name;
   j["D"] = options.map->dimension;
   j["normal_weight"] = options.map->uses_normal_weight ? options.normal_weight : 0.;
+  j["normal_smoothing"] = options.map->uses_normals ? options.normal_smoothing : 0;
   j["cell_size"] = h;
   j["seeding"] = options.seeded ? "seeded" : "complete";
   j["output_kind"] = options.output_kind;

@@ -107,6 +107,7 @@ enum progress_visitor_t { progress_visitor };
   P(CGAL::internal_np, geom_traits_t, geom_traits)                                       \
   P(CGAL::internal_np, do_flip_t, do_flip)                                               \
   P(CGAL::internal_np, number_of_relaxation_steps_t, number_of_relaxation_steps)         \
+  P(CGAL::internal_np, number_of_iterations_t, number_of_iterations)                     \
   P(CGAL::internal_np, vertex_is_constrained_t, vertex_is_constrained_map)               \
   P(CGAL::internal_np, edge_is_constrained_t, edge_is_constrained_map)                   \
   P(CGAL::internal_np, vertex_color_map_t, vertex_color_map)                             \

@@ -122,19 +122,20 @@ template <class PolygonMesh, class NamedParameters>
 Untangle_statistics untangle_faces(PolygonMesh& mesh, const NamedParameters& np)
 {
   const Progress progress = progress_of(np);
-  return Tangent_plane_relaxer<PolygonMesh, NamedParameters>(mesh, np, progress).untangle();
+  return Tangent_plane_relaxer<PolygonMesh, NamedParameters>(mesh, np, progress)
+      .untangle(0, untangle_tries_per_vertex * num_vertices(mesh));
 }
 
 /// The untangling again, after the last resort's operations: from the tangled faces
-/// with a corner where `start_at` is true; `tried_before`, `tries_per_vertex`: see
+/// with a corner where `start_at` is true; `tried_before`, `budget`: see
 /// `Tangent_plane_relaxer::untangle()`.
 template <class PolygonMesh, class NamedParameters, class StartAtMap>
 Untangle_statistics untangle_faces_again(PolygonMesh& mesh, const NamedParameters& np, StartAtMap start_at,
-                                         std::size_t tried_before, std::size_t tries_per_vertex)
+                                         std::size_t tried_before, std::size_t budget)
 {
   const Progress progress = progress_of(np);
   return Tangent_plane_relaxer<PolygonMesh, NamedParameters>(mesh, np, progress)
-      .untangle(tried_before, tries_per_vertex, start_at);
+      .untangle(tried_before, budget, start_at);
 }
 
 } // namespace internal

@@ -104,22 +104,25 @@ Quad_improvement quad_improvement_of(const NamedParameters& np)
 /// The last stage: the untangling, and where it leaves faces tangled, with the
 /// collapse's parameters (`improvement.collapse`: without it the dual's connectivity
 /// stays; `rotate_edges`), the collapses and rotations that remove them, each round of
-/// them followed by the untangling again from the faces they made (at most three
-/// rounds). The first untangling tries at most as many vertices as the mesh has (see
-/// `untangle_tries_per_vertex`), the whole stage twice as many; once that is spent (a
-/// large part of the mesh tangled: the cause is upstream) the stage ends.
+/// them followed by the untangling again from the faces they made, until a round finds
+/// nothing to do. The first untangling tries at most as many vertices as the mesh has
+/// (see `untangle_tries_per_vertex`), the runs after it as many again together
+/// (`untangle_again_tries_per_vertex`); once that is spent (a large part of the mesh
+/// tangled: the cause is upstream) only the operations go on.
 template <class QuadMesh, class NamedParameters>
 Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np, const Quad_improvement& improvement)
 {
-  constexpr int rounds_of_removal = 3;
+  // Each operation leaves the faces it changes less tangled, and the moves make no face
+  // worse, so the rounds end by themselves; this only bounds them.
+  constexpr int maximum_rounds_of_removal = 10;
   Untangle_statistics stats = untangle_faces(quads, np);
-  const std::size_t tries_per_vertex = 2 * untangle_tries_per_vertex; // the first run's and as many again
-  auto budget_left = [&] { return stats.tries < tries_per_vertex * num_vertices(quads); };
+  // per vertex of the mesh the stage starts with (the collapses remove some)
+  const std::size_t budget = (untangle_tries_per_vertex + untangle_again_tries_per_vertex) * num_vertices(quads);
   // where the operations changed faces: the untangling again starts from there only (it
   // left the others as they are, and would spend its tries on them again)
   auto changed = get(CGAL::dynamic_vertex_property_t<bool>(), quads);
-  for(int round = 0; improvement.collapse && round < rounds_of_removal &&
-                     stats.folded_after + stats.non_convex_after > 0 && budget_left();
+  for(int round = 0; improvement.collapse && round < maximum_rounds_of_removal &&
+                     stats.folded_after + stats.non_convex_after > 0;
       ++round) {
     for(auto v : vertices(quads))
       put(changed, v, false);
@@ -129,7 +132,7 @@ Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np, const Q
     stats.time_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if(stats.collapses + stats.rotations == operations)
       break;
-    const Untangle_statistics again = untangle_faces_again(quads, np, changed, stats.tries, tries_per_vertex);
+    const Untangle_statistics again = untangle_faces_again(quads, np, changed, stats.tries, budget);
     stats.folded_after = again.folded_after;
     stats.non_convex_after = again.non_convex_after;
     stats.moves += again.moves;

@@ -307,8 +307,7 @@ template <class TriangleMesh, class NamedParameters>
 double first_cell_size_for_count(const TriangleMesh& tm, const NamedParameters& np, std::size_t target)
 {
   const double h = cell_size_of(tm, np);
-  if(CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::seeding_method),
-                                        Seeding_method::COMPLETE_SCAN) == Seeding_method::SEEDED)
+  if(is_seeded(np))
     return h;
   const double estimate = cell_size_for_count(tm, range_map_of(tm, np), target);
   return estimate > 0 && (h < estimate / 2 || h > 2 * estimate) ? estimate : h;

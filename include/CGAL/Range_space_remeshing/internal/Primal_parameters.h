@@ -153,14 +153,21 @@ struct Primal_run_options
   std::size_t maximum_vertices;
 };
 
+/// Whether `np` asks for the seeded traversal (it maps only the faces it crosses).
+template <class NamedParameters>
+bool is_seeded(const NamedParameters& np)
+{
+  return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::seeding_method),
+                                            Seeding_method::COMPLETE_SCAN) == Seeding_method::SEEDED;
+}
+
 template <class NamedParametersIn>
 Primal_run_options primal_run_options(const NamedParametersIn& np_in)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   Primal_run_options options;
-  options.seeded = choose_parameter(get_parameter(np_in, CGAL::internal_np::seeding_method),
-                                    Seeding_method::COMPLETE_SCAN) == Seeding_method::SEEDED;
+  options.seeded = is_seeded(np_in);
   options.preserve = choose_parameter(get_parameter(np_in, internal_np::preserve_topology), false);
   options.check = options.preserve || choose_parameter(get_parameter(np_in, internal_np::check_topology), false);
   options.refine_locally =

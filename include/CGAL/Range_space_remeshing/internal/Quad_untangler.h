@@ -37,8 +37,10 @@ struct Face_shape_counts
 /// Vertices the untangling tries in all, per vertex of the mesh: where a large part of
 /// the mesh is tangled (the cause is then upstream: a map much finer than the input's
 /// facets) the stage stops at a cost of a few relaxation steps instead of searching on.
-/// The runs after the collapses and rotations of the last resort have as many again.
 constexpr std::size_t untangle_tries_per_vertex = 1;
+/// The same for the runs after the collapses and rotations of the last resort, all
+/// together. Once they are spent, the operations go on alone: they are few and local.
+constexpr std::size_t untangle_again_tries_per_vertex = 1;
 
 /// Moves the vertices of the faces that are folded or non-convex. `Place` is called as
 /// `place(i, p)`: where vertex i goes when sent towards p (on its tangent planes, along

@@ -160,13 +160,12 @@ public:
   /// (border vertices along their border). The projections are made only for the
   /// vertices it tries to move, the mesh is written only if some face is tangled.
   /// `tried_before`: the vertices tried by earlier runs of the same stage, which count
-  /// against its budget of `tries_per_vertex` per vertex (see `untangle_tries_per_vertex`).
+  /// against its `budget` of tries (see `untangle_tries_per_vertex`).
   /// `start_at` (vertex -> bool): the tangled faces it works on are those not convex in
   /// themselves (seen from their own vector area, folded or not) and those with a corner
   /// where it is true; the counts are of all.
   template <class StartAtMap = CGAL::Constant_property_map<vertex_descriptor, bool>>
-  Untangle_statistics untangle(std::size_t tried_before = 0, std::size_t tries_per_vertex = untangle_tries_per_vertex,
-                               StartAtMap start_at = StartAtMap(true))
+  Untangle_statistics untangle(std::size_t tried_before, std::size_t budget, StartAtMap start_at = StartAtMap(true))
   {
     const auto start = std::chrono::steady_clock::now();
     Untangle_statistics stats;
@@ -186,7 +185,7 @@ public:
     if(!tangled.empty()) {
       find_border();
       start_projections();
-      untangler.run(tangled, stats.moves, stats.rounds, stats.tries, tries_per_vertex * n_, progress_);
+      untangler.run(tangled, stats.moves, stats.rounds, stats.tries, budget, progress_);
       const Face_shape_counts after = untangler.count(untangler.tangled_faces());
       stats.folded_after = after.folded;
       stats.non_convex_after = after.non_convex;
