@@ -111,6 +111,13 @@ for mesh in man man_changed man_kept; do
   [ "$mesh" = man ] && input="$man"
   render "$input" "topology_$mesh.png" --camera-position=0,2.2,0.1 --camera-focal-point=0,0,0 --camera-view-up=0,0,1
 done
+# the same, position + normal (the manual's section on normals): the normals as
+# computed (pieces come off at the hands and feet) and averaged 8 times (the default)
+remesh man_normals_raw "$man" --target-vertices 4373 --map position-normal --normal-smoothing 0 2> /dev/null
+remesh man_normals_averaged "$man" --target-vertices 4373 --map position-normal
+for mesh in man_normals_raw man_normals_averaged; do
+  render "$work/$mesh.off" "$mesh.png" --camera-position=0,2.2,0.1 --camera-focal-point=0,0,0 --camera-view-up=0,0,1
+done
 # a sizing field (the manual's section on range maps): the example's elephant, four
 # times finer in each direction around its highest point
 (cd "$work" && ../bin/sizing_field_example "../../$elephant" > sizing_field_example.txt)
