@@ -128,6 +128,7 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                    {"moves", all.untangle.moves},
                    {"rounds", all.untangle.rounds},
                    {"tries", all.untangle.tries},
+                   {"vertices_before", all.untangle.vertices_before},
                    {"collapses", all.untangle.collapses},
                    {"rotations", all.untangle.rotations}};
   j["cell_size_used"] = s.cell_size;

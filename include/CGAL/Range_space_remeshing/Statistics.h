@@ -257,6 +257,8 @@ struct Untangle_statistics
   std::size_t rounds = 0;
   /// vertices tried: for each, a search of places on its tangent planes
   std::size_t tries = 0;
+  /// vertices of the mesh when the stage began: the moves try at most twice as many
+  std::size_t vertices_before = 0;
   /// quads collapsed along a diagonal where moves left them tangled (each where the
   /// faces it changes are then less tangled: fewer non-convex, then fewer folded)
   std::size_t collapses = 0;

@@ -105,7 +105,7 @@ Quad_improvement quad_improvement_of(const NamedParameters& np)
 /// collapse's parameters (`improvement.collapse`: without it the dual's connectivity
 /// stays; `rotate_edges`), the collapses and rotations that remove them, each round of
 /// them followed by the untangling again from the faces they made, until a round finds
-/// nothing to do. The first untangling tries at most as many vertices as the mesh has
+/// nothing to do (at most `maximum_rounds_of_removal`). The first untangling tries at most as many vertices as the mesh has
 /// (see `untangle_tries_per_vertex`), the runs after it as many again together
 /// (`untangle_again_tries_per_vertex`); once that is spent (a large part of the mesh
 /// tangled: the cause is upstream) only the operations go on.
@@ -117,7 +117,8 @@ Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np, const Q
   constexpr int maximum_rounds_of_removal = 10;
   Untangle_statistics stats = untangle_faces(quads, np);
   // per vertex of the mesh the stage starts with (the collapses remove some)
-  const std::size_t budget = (untangle_tries_per_vertex + untangle_again_tries_per_vertex) * num_vertices(quads);
+  stats.vertices_before = num_vertices(quads);
+  const std::size_t budget = (untangle_tries_per_vertex + untangle_again_tries_per_vertex) * stats.vertices_before;
   // where the operations changed faces: the untangling again starts from there only (it
   // left the others as they are, and would spend its tries on them again)
   auto changed = get(CGAL::dynamic_vertex_property_t<bool>(), quads);

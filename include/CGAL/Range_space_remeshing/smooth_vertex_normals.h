@@ -13,7 +13,9 @@
 // the topology (benchmark/RESULTS.md, man with position-normal). The bound the remesh
 // keeps on the normal part then holds for these normals.
 
+#include <CGAL/Range_space_remeshing/Lazy_vertex_normal_map.h>
 #include <CGAL/Range_space_remeshing/Remeshing_error.h>
+#include <CGAL/Range_space_remeshing/parameters.h>
 #include <CGAL/Range_space_remeshing/internal/Mesh_helpers.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -31,28 +33,27 @@ namespace CGAL {
 namespace Range_space_remeshing {
 namespace internal {
 
-/// By face index: whether the face's vector area is not zero (exactly: the crease
-/// triangles have coincident corners).
+/// By face index: whether two consecutive corners of the face are one point, as in
+/// the triangles of an opened crease (a test of equality, whatever the mesh's scale).
 template <class TriangleMesh, class NamedParameters>
-std::vector<char> faces_with_area(const TriangleMesh& tm, const NamedParameters& np)
+std::vector<char> faces_with_coincident_corners(const TriangleMesh& tm, const NamedParameters& np)
 {
   const auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                                       get_const_property_map(CGAL::vertex_point, tm));
   const auto face_index = CGAL::get_initialized_face_index_map(tm, np);
-  std::vector<char> has_area(index_bound(faces(tm), face_index), 0);
-  for(auto f : faces(tm)) {
-    const auto h0 = halfedge(f, tm);
-    const Vec3 origin = to_vec3(get(vpm, source(h0, tm)));
-    Vec3 area{{0, 0, 0}};
-    for(auto h : CGAL::halfedges_around_face(h0, tm)) {
-      const Vec3 term = cross(difference(to_vec3(get(vpm, source(h, tm))), origin),
-                              difference(to_vec3(get(vpm, target(h, tm))), origin));
-      for(int d = 0; d < 3; ++d)
-        area[d] += term[d];
-    }
-    has_area[get(face_index, f)] = area[0] != 0 || area[1] != 0 || area[2] != 0;
-  }
-  return has_area;
+  std::vector<char> coincident(index_bound(faces(tm), face_index), 0);
+  for(auto f : faces(tm))
+    for(auto h : CGAL::halfedges_around_face(halfedge(f, tm), tm))
+      if(get(vpm, source(h, tm)) == get(vpm, target(h, tm)))
+        coincident[get(face_index, f)] = 1;
+  return coincident;
+}
+
+/// Whether a sum of `terms` unit vectors (or zeros) is too short to give a direction:
+/// the terms cancel up to rounding.
+inline bool cancels(const Vec3& sum, std::size_t terms)
+{
+  return !(dot(sum, sum) > 1e-24 * double(terms) * double(terms));
 }
 
 } // namespace internal
@@ -64,15 +65,18 @@ replaces each vertex normal of `tm` in `normals` by the unit sum of its own and 
 neighbours' (the vertices it shares an edge with), as many times as asked: after k
 iterations a normal is a weighted mean over the vertices within k edges. All are
 read before any is written, so the result does not depend on the order of the
-vertices. A vertex whose sum vanishes (a thin sheet folded onto itself) keeps its
-normal; a zero normal (see `compute_vertex_normals()`) adds nothing to its neighbours'.
+vertices. A vertex whose sum cancels up to rounding (a thin sheet folded onto itself)
+keeps its normal; a zero normal (see `compute_vertex_normals()`) adds nothing to its
+neighbours' in the first round, and has their mean from then on.
 
-An edge joins two normals only where a face of it has an area: the zero-area
-triangles of a crease opened by `insert_crease_triangles()` join nothing, so each
-side of the crease keeps its own normals. A crease left closed is smoothed over about
+An edge joins two normals only where a face on it has no two corners at one point:
+the triangles of a crease opened by `insert_crease_triangles()` join nothing, so each
+side of the crease keeps its own normals, but where the crease ends (its last vertex
+is not duplicated, the sides meet there). A crease left closed is smoothed over about
 k edges on either side.
 
-\tparam TriangleMesh a model of `FaceGraph` and `VertexListGraph`.
+\tparam TriangleMesh a model of `FaceListGraph` and `VertexListGraph` (its faces may be
+        polygons).
 \tparam VertexNormalMap a read-write property map, vertex -> `std::array<double, 3>` or
         a CGAL 3-D vector.
 \tparam NamedParameters a sequence of named parameters.
@@ -115,16 +119,21 @@ void smooth_vertex_normals(const TriangleMesh& tm, VertexNormalMap normals,
   using CGAL::parameters::get_parameter;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Normal = typename boost::property_traits<VertexNormalMap>::value_type;
+  static_assert(internal::check_named_parameters<struct smooth_vertex_normals_np, NamedParameters,
+                                                 CGAL::internal_np::number_of_iterations_t,
+                                                 CGAL::internal_np::vertex_point_t,
+                                                 CGAL::internal_np::vertex_index_t,
+                                                 CGAL::internal_np::face_index_t>());
   const std::size_t iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 1);
   if(iterations > 1000000)
     throw Remeshing_error("smooth_vertex_normals: number_of_iterations must be at most 10^6",
                           Remeshing_error::Kind::BAD_PARAMETER);
   const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
-  const std::vector<char> has_area = internal::faces_with_area(tm, np);
+  const std::vector<char> crease = internal::faces_with_coincident_corners(tm, np);
   const auto face_index = CGAL::get_initialized_face_index_map(tm, np);
-  auto joins = [&](auto h) { // an edge a face of which has an area
+  auto joins = [&](auto h) { // an edge on a face that is not a crease triangle
     for(auto g : {face(h, tm), face(opposite(h, tm), tm)})
-      if(g != boost::graph_traits<TriangleMesh>::null_face() && has_area[get(face_index, g)])
+      if(g != boost::graph_traits<TriangleMesh>::null_face() && !crease[get(face_index, g)])
         return true;
     return false;
   };
@@ -135,14 +144,15 @@ void smooth_vertex_normals(const TriangleMesh& tm, VertexNormalMap normals,
   for(std::size_t round = 0; round < iterations; ++round) {
     for(vertex_descriptor v : vertices(tm)) {
       internal::Vec3 sum = current[get(index, v)];
+      std::size_t terms = 1;
       if(halfedge(v, tm) != boost::graph_traits<TriangleMesh>::null_halfedge())
         for(auto h : CGAL::halfedges_around_target(halfedge(v, tm), tm))
-          if(joins(h))
+          if(joins(h)) {
             for(int d = 0; d < 3; ++d)
               sum[d] += current[get(index, source(h, tm))][d];
-      const internal::Vec3 unit = internal::normalized(sum);
-      const bool vanished = unit[0] == 0 && unit[1] == 0 && unit[2] == 0;
-      smoothed[get(index, v)] = vanished ? current[get(index, v)] : unit;
+            ++terms;
+          }
+      smoothed[get(index, v)] = internal::cancels(sum, terms) ? current[get(index, v)] : internal::normalized(sum);
     }
     current.swap(smoothed);
   }
