@@ -570,6 +570,16 @@ void test_smooth_vertex_normals()
   }
   CHECK(refused);
   CHECK(normals[first] == (Normal{{0.6, 0, 0.8}}));
+  for(double bad : {-1., 2.5}) { // ... as a negative or fractional count is
+    bool bad_refused = false;
+    try {
+      RSR::smooth_vertex_normals(tetrahedron, normals, RSR::parameters::number_of_iterations(bad));
+    } catch(const RSR::Remeshing_error& e) {
+      bad_refused = e.kind() == RSR::Remeshing_error::Kind::BAD_PARAMETER;
+    }
+    CHECK(bad_refused);
+  }
+  CHECK(normals[first] == (Normal{{0.6, 0, 0.8}}));
   // a sphere: radial normals stay radial, CGAL vectors as values
   Mesh sphere = make_sphere(1.0, 3);
   auto vectors = sphere.add_property_map<Mesh::Vertex_index, K::Vector_3>("v:test_vector").first;

@@ -105,10 +105,11 @@ Quad_improvement quad_improvement_of(const NamedParameters& np)
 /// collapse's parameters (`improvement.collapse`: without it the dual's connectivity
 /// stays; `rotate_edges`), the collapses and rotations that remove them, each round of
 /// them followed by the untangling again from the faces they made, until a round finds
-/// nothing to do (at most `maximum_rounds_of_removal`). The first untangling tries at most as many vertices as the mesh has
-/// (see `untangle_tries_per_vertex`), the runs after it as many again together
-/// (`untangle_again_tries_per_vertex`); once that is spent (a large part of the mesh
-/// tangled: the cause is upstream) only the operations go on.
+/// nothing to do (at most `maximum_rounds_of_removal`). The first untangling tries at
+/// most as many vertices as the mesh has (see `untangle_tries_per_vertex`), the runs
+/// after it as many again together (`untangle_again_tries_per_vertex`); once that is
+/// spent (a large part of the mesh tangled: the cause is upstream) only the operations
+/// go on.
 template <class QuadMesh, class NamedParameters>
 Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np, const Quad_improvement& improvement)
 {

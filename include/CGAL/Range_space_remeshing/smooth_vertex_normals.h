@@ -90,7 +90,7 @@ k edges on either side.
     \cgalParamDescription{the rounds of averaging}
     \cgalParamType{`std::size_t`}
     \cgalParamDefault{`1`}
-    \cgalParamExtra{at most 10^6: `Remeshing_error` (`BAD_PARAMETER`) above}
+    \cgalParamExtra{a whole number from 0 to 10^6: `Remeshing_error` (`BAD_PARAMETER`) otherwise}
   \cgalParamNEnd
   \cgalParamNBegin{vertex_point_map}
     \cgalParamDescription{a property map associating points to the vertices of `tm`}
@@ -115,8 +115,6 @@ template <class TriangleMesh, class VertexNormalMap, class NamedParameters = CGA
 void smooth_vertex_normals(const TriangleMesh& tm, VertexNormalMap normals,
                            const NamedParameters& np = CGAL::parameters::default_values())
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
   using vertex_descriptor = typename boost::graph_traits<TriangleMesh>::vertex_descriptor;
   using Normal = typename boost::property_traits<VertexNormalMap>::value_type;
   static_assert(internal::check_named_parameters<struct smooth_vertex_normals_np, NamedParameters,
@@ -124,10 +122,8 @@ void smooth_vertex_normals(const TriangleMesh& tm, VertexNormalMap normals,
                                                  CGAL::internal_np::vertex_point_t,
                                                  CGAL::internal_np::vertex_index_t,
                                                  CGAL::internal_np::face_index_t>());
-  const std::size_t iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 1);
-  if(iterations > 1000000)
-    throw Remeshing_error("smooth_vertex_normals: number_of_iterations must be at most 10^6",
-                          Remeshing_error::Kind::BAD_PARAMETER);
+  const std::size_t iterations = internal::count_parameter(np, CGAL::internal_np::number_of_iterations, 1,
+                                                           "smooth_vertex_normals: number_of_iterations", 1000000);
   const auto index = CGAL::get_initialized_vertex_index_map(tm, np);
   const std::vector<char> crease = internal::faces_with_coincident_corners(tm, np);
   const auto face_index = CGAL::get_initialized_face_index_map(tm, np);
