@@ -130,7 +130,8 @@ inline void print_stats(const Options& options, const Mesh& input, const Mesh& o
                    {"tries", all.untangle.tries},
                    {"vertices_before", all.untangle.vertices_before},
                    {"collapses", all.untangle.collapses},
-                   {"rotations", all.untangle.rotations}};
+                   {"rotations", all.untangle.rotations},
+                   {"moves_off_surface", all.untangle.moves_off_surface}};
   j["cell_size_used"] = s.cell_size;
   const bool carried = find_vertex_uvs(output).has_value();
   j["texture_coordinates"] = {{"carried", carried},

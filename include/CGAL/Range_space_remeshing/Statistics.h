@@ -257,13 +257,17 @@ struct Untangle_statistics
   std::size_t rounds = 0;
   /// vertices tried: for each, a search of places on its tangent planes
   std::size_t tries = 0;
-  /// vertices of the mesh when the stage began: the moves try at most twice as many
+  /// vertices of the mesh when the stage began: the moves try at most three times as many
   std::size_t vertices_before = 0;
   /// quads collapsed along a diagonal where moves left them tangled (each where the
   /// faces it changes are then less tangled: fewer non-convex, then fewer folded)
   std::size_t collapses = 0;
   /// edges of such quads rotated, where no collapse was allowed
   std::size_t rotations = 0;
+  /// moves of the last run, for the faces still tangled after those: off the tangent
+  /// planes along the vertex normal, by at most a tenth of the mean length of the
+  /// vertex's edges (the input folds there, or bends more than the quads can follow)
+  std::size_t moves_off_surface = 0;
   double time_ms = 0;
 };
 

@@ -138,6 +138,21 @@ Untangle_statistics untangle_faces_again(PolygonMesh& mesh, const NamedParameter
       .untangle(tried_before, budget, start_at);
 }
 
+/// The last untangling, where faces stay tangled after the others and the operations:
+/// from the faces not convex in themselves (seen from their own vector area), whose
+/// vertices, and those around them, may leave their tangent planes by a little (see
+/// `Tangent_plane_relaxer::untangle()`). A face only folded against its corners'
+/// normals (bent over a thin limb, convex) is left as it is.
+template <class PolygonMesh, class NamedParameters>
+Untangle_statistics untangle_faces_off_surface(PolygonMesh& mesh, const NamedParameters& np,
+                                               std::size_t tried_before, std::size_t budget)
+{
+  using vertex_descriptor = typename boost::graph_traits<PolygonMesh>::vertex_descriptor;
+  const Progress progress = progress_of(np);
+  return Tangent_plane_relaxer<PolygonMesh, NamedParameters>(mesh, np, progress)
+      .untangle(tried_before, budget, CGAL::Constant_property_map<vertex_descriptor, bool>(false), true);
+}
+
 } // namespace internal
 
 } // namespace Range_space_remeshing

@@ -101,15 +101,33 @@ Quad_improvement quad_improvement_of(const NamedParameters& np)
   return improvement;
 }
 
+/// The faces left tangled, untangled once more with their vertices free to leave their
+/// tangent planes by a little (`off_surface_reach`), with as many tries again as the
+/// first untangling.
+template <class QuadMesh, class NamedParameters>
+void untangle_off_surface(QuadMesh& quads, const NamedParameters& np, Untangle_statistics& stats)
+{
+  const std::size_t budget = stats.tries + untangle_off_surface_tries_per_vertex * stats.vertices_before;
+  const Untangle_statistics last = untangle_faces_off_surface(quads, np, stats.tries, budget);
+  stats.folded_after = last.folded_after;
+  stats.non_convex_after = last.non_convex_after;
+  stats.moves += last.moves;
+  stats.moves_off_surface = last.moves;
+  stats.rounds += last.rounds;
+  stats.tries = last.tries;
+  stats.time_ms += last.time_ms;
+}
+
 /// The last stage: the untangling, and where it leaves faces tangled, with the
 /// collapse's parameters (`improvement.collapse`: without it the dual's connectivity
 /// stays; `rotate_edges`), the collapses and rotations that remove them, each round of
 /// them followed by the untangling again from the faces they made, until a round finds
-/// nothing to do (at most `maximum_rounds_of_removal`). The first untangling tries at
-/// most as many vertices as the mesh has (see `untangle_tries_per_vertex`), the runs
-/// after it as many again together (`untangle_again_tries_per_vertex`); once that is
-/// spent (a large part of the mesh tangled: the cause is upstream) only the operations
-/// go on.
+/// nothing to do (at most `maximum_rounds_of_removal`); then, for the faces still
+/// tangled and again with `improvement.collapse` only, the untangling off the tangent
+/// planes (`untangle_off_surface()`). The first untangling tries at most as many
+/// vertices as the mesh has (see `untangle_tries_per_vertex`), the runs after it as
+/// many again together (`untangle_again_tries_per_vertex`); once that is spent (a large
+/// part of the mesh tangled: the cause is upstream) only the operations go on.
 template <class QuadMesh, class NamedParameters>
 Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np, const Quad_improvement& improvement)
 {
@@ -142,6 +160,8 @@ Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np, const Q
     stats.tries = again.tries;
     stats.time_ms += again.time_ms;
   }
+  if(improvement.collapse && stats.folded_after + stats.non_convex_after > 0)
+    untangle_off_surface(quads, np, stats);
   return stats;
 }
 
@@ -363,7 +383,10 @@ vertices of the quads left folded or non-convex (see `Untangle_statistics`), and
 needed those around them, move on their tangent planes to raise the least corner
 quality of their faces, never making a face's shape worse; a quad that moves leave
 tangled is collapsed along a diagonal, or an edge of it rotated, where that leaves
-the faces it changes less tangled (all quads and the topology kept). When the cell size
+the faces it changes less tangled (all quads and the topology kept); faces still tangled
+then (where the input folds) get one more untangling whose moves may leave the tangent
+planes along the vertex normals, by at most a tenth of a vertex's mean edge length
+(`Untangle_statistics::moves_off_surface`). When the cell size
 resolves nothing (an empty primal, or only pieces without a dual), `quads` is left
 empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
 

@@ -100,14 +100,16 @@ Face_shape polygon_shape(std::size_t count, const Position& position, const Norm
 /// edges' lengths. Positive at every corner only where the face is fine and turns left
 /// seen from the surface too, so that raising it unfolds as well as it opens reflex
 /// corners. Returns the least; adds each corner's, at most `cap`, to `capped_sum`. A
-/// polygon with a side or an area of length 0 counts -1 at every corner.
+/// polygon with a side or an area of length 0 counts -1 at every corner. With
+/// `own_area_only`, the vector-area normal alone (where the corners' normals do not
+/// tell the surface's side: over a fold of the input).
 template <class Position, class Normal>
 double polygon_corner_quality(std::size_t count, const Position& position, const Normal& normal, double cap,
-                              double& capped_sum)
+                              double& capped_sum, bool own_area_only = false)
 {
   Vec3 area, reference;
   polygon_area_and_reference(count, position, normal, area, reference);
-  const Vec3 n[2] = {normalized(area), normalized(reference)};
+  const Vec3 n[2] = {normalized(area), own_area_only ? normalized(area) : normalized(reference)};
   double worst = 1, sum = 0;
   for(std::size_t i = 0; i < count; ++i) {
     const Vec3& p = position(i);
@@ -150,12 +152,13 @@ inline bool is_convex_in_itself(const Face_corners& fc, std::size_t k, const std
 
 /// The corner quality of face k (see `polygon_corner_quality()`).
 inline double corner_quality(const Face_corners& fc, std::size_t k, const std::vector<Vec3>& position,
-                             const std::vector<Vec3>& normal, double cap, double& capped_sum)
+                             const std::vector<Vec3>& normal, double cap, double& capped_sum,
+                             bool own_area_only = false)
 {
   const std::size_t* corner = fc.corners.data() + fc.first[k];
   return polygon_corner_quality(
       fc.corner_count(k), [&](std::size_t i) -> const Vec3& { return position[corner[i]]; },
-      [&](std::size_t i) -> const Vec3& { return normal[corner[i]]; }, cap, capped_sum);
+      [&](std::size_t i) -> const Vec3& { return normal[corner[i]]; }, cap, capped_sum, own_area_only);
 }
 
 } // namespace internal

@@ -13,7 +13,9 @@
 // few places on its tangent planes by the least corner quality of its faces (a local
 // max-min step, as in Knupp's untangling or CGAL's angle and area smoothing; ties
 // broken by the sum of the poor corners' qualities), and only if that raises it and
-// makes no face of it worse in shape.
+// makes no face of it worse in shape. Where faces stay tangled after all that, the
+// vertices may leave their tangent planes by a little (`allow_off_surface()`): a quad
+// over a fold of the input (a scan's, say) cannot be convex on the planes it samples.
 
 #include <CGAL/Range_space_remeshing/internal/Face_corners.h>
 #include <CGAL/Range_space_remeshing/internal/Progress.h>
@@ -41,6 +43,11 @@ constexpr std::size_t untangle_tries_per_vertex = 1;
 /// The same for the runs after the collapses and rotations of the last resort, all
 /// together. Once they are spent, the operations go on alone: they are few and local.
 constexpr std::size_t untangle_again_tries_per_vertex = 1;
+/// And for the last run, off the tangent planes.
+constexpr std::size_t untangle_off_surface_tries_per_vertex = 1;
+/// How far that run may move a vertex off its tangent planes, along its normal: this
+/// part of the mean length of its edges.
+constexpr double off_surface_reach = 0.1;
 
 /// Moves the vertices of the faces that are folded or non-convex. `Place` is called as
 /// `place(i, p)`: where vertex i goes when sent towards p (on its tangent planes, along
@@ -62,6 +69,11 @@ public:
   Quad_untangler(const Face_corners& fc, std::vector<Vec3>& position, const std::vector<Vec3>& normal, Place place)
     : fc_(fc), position_(position), normal_(normal), place_(place), stuck_(fc.first_face.size() - 1, 0)
   {}
+
+  /// Lets vertex i also be sent up to `reach[i]` along its normal (`place` keeps it
+  /// within that of its tangent planes), and judges the corners from each face's own
+  /// vector area alone: where the input folds, the normals do not tell its side.
+  void allow_off_surface(const std::vector<double>& reach) { off_surface_ = &reach; }
 
   Face_shape shape(std::size_t k) const { return shape_of(fc_, k, position_, normal_); }
   bool is_convex_in_itself(std::size_t k) const { return internal::is_convex_in_itself(fc_, k, position_); }
@@ -223,7 +235,8 @@ private:
     quality = Local_quality{1, 0};
     for(std::size_t k : incident(i)) {
       quality.worst =
-          (std::min)(quality.worst, corner_quality(fc_, k, position_, normal_, corner_cap, quality.capped_sum));
+          (std::min)(quality.worst, corner_quality(fc_, k, position_, normal_, corner_cap, quality.capped_sum,
+                                                   off_surface_ != nullptr));
       if(quality.worst < bound.worst)
         return false;
     }
@@ -260,6 +273,11 @@ private:
       found.push_back(scaled(centroid, 1. / double(others)));
       add_compass_targets(i, found);
     }
+    if(off_surface_ != nullptr) { // straight off the planes: the others' offsets are mostly past the reach
+      const double reach = (*off_surface_)[i];
+      found.push_back(sum(position_[i], scaled(normal_[i], reach)));
+      found.push_back(sum(position_[i], scaled(normal_[i], -reach)));
+    }
     return found;
   }
 
@@ -287,13 +305,24 @@ private:
       found.push_back(sum(x, sum(scaled(u, radius * a[0]), scaled(w, radius * a[1]))));
   }
 
-  // whether some face around vertex i is worse in shape than in `before`
-  bool makes_a_face_worse(std::size_t i, const std::vector<Face_shape>& before) const
+  // A face's shape and whether it is convex seen from its own vector area alone: a
+  // folded face may also be a dart, which only the second tells.
+  struct Shape_seen
+  {
+    Face_shape shape;
+    bool convex_in_itself;
+  };
+
+  // whether some face around vertex i is worse in shape than in `before`, or was
+  // convex in itself and is no longer
+  bool makes_a_face_worse(std::size_t i, const std::vector<Shape_seen>& before) const
   {
     std::size_t c = 0;
-    for(std::size_t k : incident(i))
-      if(shape(k) > before[c++])
+    for(std::size_t k : incident(i)) {
+      const Shape_seen& was = before[c++];
+      if(shape(k) > was.shape || (was.convex_in_itself && !is_convex_in_itself(k)))
         return true;
+    }
     return false;
   }
 
@@ -303,9 +332,9 @@ private:
   bool improve_vertex(std::size_t i)
   {
     const Vec3 start = position_[i];
-    std::vector<Face_shape> before;
+    std::vector<Shape_seen> before;
     for(std::size_t k : incident(i))
-      before.push_back(shape(k));
+      before.push_back(Shape_seen{shape(k), is_convex_in_itself(k)});
     Local_quality best_quality = local_quality(i);
     Vec3 best = start;
     for(const Vec3& target : targets(i))
@@ -330,6 +359,7 @@ private:
   std::vector<Vec3>& position_;
   const std::vector<Vec3>& normal_;
   Place place_;
+  const std::vector<double>* off_surface_ = nullptr;
   // A vertex that found no better place stays stuck until a corner of its faces moves:
   // its search depends on those positions only, and would find nothing again.
   std::vector<unsigned char> stuck_;

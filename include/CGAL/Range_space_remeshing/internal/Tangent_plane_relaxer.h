@@ -163,9 +163,12 @@ public:
   /// against its `budget` of tries (see `untangle_tries_per_vertex`).
   /// `start_at` (vertex -> bool): the tangled faces it works on are those not convex in
   /// themselves (seen from their own vector area, folded or not) and those with a corner
-  /// where it is true; the counts are of all.
+  /// where it is true; the counts are of all. With `off_surface`, a vertex may also
+  /// leave its tangent planes along its normal by `off_surface_reach` of the mean
+  /// length of its edges (not on a crease or the border: those stay on it).
   template <class StartAtMap = CGAL::Constant_property_map<vertex_descriptor, bool>>
-  Untangle_statistics untangle(std::size_t tried_before, std::size_t budget, StartAtMap start_at = StartAtMap(true))
+  Untangle_statistics untangle(std::size_t tried_before, std::size_t budget, StartAtMap start_at = StartAtMap(true),
+                               bool off_surface = false)
   {
     const auto start = std::chrono::steady_clock::now();
     Untangle_statistics stats;
@@ -185,6 +188,10 @@ public:
     if(!tangled.empty()) {
       find_border();
       start_projections();
+      if(off_surface) {
+        find_off_surface_reach();
+        untangler.allow_off_surface(off_surface_reach_);
+      }
       untangler.run(tangled, stats.moves, stats.rounds, stats.tries, budget, progress_);
       const Face_shape_counts after = untangler.count(untangler.tangled_faces());
       stats.folded_after = after.folded;
@@ -233,7 +240,29 @@ private:
     }
     if(on_face_without_area_[i] || projection_[i].constrained_directions() == 0)
       return position_[i];
-    return project(i, p);
+    const Vec3 on_planes = project(i, p);
+    if(off_surface_reach_.empty())
+      return on_planes;
+    const double reach = off_surface_reach_[i];
+    const double off = (std::min)(reach, (std::max)(-reach, dot(difference(p, on_planes), normal_[i])));
+    return {{on_planes[0] + off * normal_[i][0], on_planes[1] + off * normal_[i][1], on_planes[2] + off * normal_[i][2]}};
+  }
+
+  // how far the untangling off the surface may move each vertex from its planes
+  void find_off_surface_reach()
+  {
+    off_surface_reach_.assign(n_, 0);
+    for(vertex_descriptor v : vertices(mesh_)) {
+      double lengths = 0;
+      std::size_t edges = 0;
+      for(auto h : CGAL::halfedges_around_target(halfedge(v, mesh_), mesh_)) {
+        const Vec3 d = difference(position_[index(source(h, mesh_))], position_[index(v)]);
+        lengths += std::sqrt(dot(d, d));
+        ++edges;
+      }
+      if(edges > 0)
+        off_surface_reach_[index(v)] = off_surface_reach * lengths / double(edges);
+    }
   }
 
   void read_vertices()
@@ -452,6 +481,7 @@ private:
   std::vector<vertex_descriptor> vertex_of_; // by index, for the untangling
   std::vector<std::uint8_t> prepared_;
   std::vector<Vec3> scratch_;
+  std::vector<double> off_surface_reach_; // by vertex index; empty: on the planes
 };
 
 } // namespace internal
