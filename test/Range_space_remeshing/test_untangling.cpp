@@ -25,6 +25,7 @@
 #include <CGAL/Range_space_remeshing/smooth_vertex_normals.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -67,6 +68,24 @@ bool is_non_convex(const std::vector<Point>& c)
   return false;
 }
 
+// the 1st percentile of the corner angles of all faces, in degrees (the issue's
+// measure of shape)
+double first_percentile_angle(const Mesh& m)
+{
+  std::vector<double> angles;
+  for(auto f : faces(m)) {
+    const std::vector<Point> c = corners_of(m, f);
+    const std::size_t n = c.size();
+    for(std::size_t i = 0; i < n; ++i) {
+      const Vector next = c[(i + 1) % n] - c[i], prev = c[(i + n - 1) % n] - c[i];
+      const double lengths = std::sqrt(next.squared_length() * prev.squared_length());
+      angles.push_back(lengths > 0 ? std::acos(std::clamp(next * prev / lengths, -1., 1.)) * 180 / CGAL_PI : 0);
+    }
+  }
+  std::sort(angles.begin(), angles.end());
+  return angles.empty() ? 0 : angles[angles.size() / 100];
+}
+
 long euler_characteristic(const Mesh& m)
 {
   return long(num_vertices(m)) - long(num_edges(m)) + long(num_faces(m));
@@ -97,6 +116,7 @@ struct Measured
 {
   RSR::Remesh_statistics stats;
   std::size_t vertices = 0, non_convex = 0; // the count
+  double first_percentile_angle = 0;        // degrees
 };
 
 // `folds_may_stay`: a face may stay folded against its corners' normals (they vary at
@@ -171,7 +191,8 @@ Measured check_model(const std::string& folder, const std::string& name, bool sm
     CHECK_EQ(euler_characteristic(quads), euler_characteristic(input));
   if(smooth)
     CHECK_EQ(non_convex, std::size_t(0));
-  const Measured measured{stats, num_vertices(quads), non_convex};
+  const Measured measured{stats, num_vertices(quads), non_convex, first_percentile_angle(quads)};
+  std::cout << "  1st-percentile corner angle " << measured.first_percentile_angle << " degrees" << std::endl;
   // the stage counts a face folded and not convex as folded
   CHECK(non_convex <= stats.untangle.non_convex_after + stats.untangle.folded_after);
   if(map == Map::IDENTITY || folds_may_stay)
@@ -182,17 +203,28 @@ Measured check_model(const std::string& folder, const std::string& name, bool sm
   return measured;
 }
 
+// The squaring after the untangling (quads made squares at their corners, along the
+// surface): the targets for the 1st-percentile corner angle, 50 degrees with
+// the identity, 35 with the position-normal map. Before it, armadillo had 45.3 and man
+// 39.8 with the identity, bunny00 21.5 with position and normal (the mean of the
+// neighbours keeps the sheared quads of the normal map's cells sheared).
+void check_shape(const Measured& measured, double least_first_percentile_angle)
+{
+  CHECK(measured.first_percentile_angle >= least_first_percentile_angle);
+}
+
 // man with the position-normal map: its normals vary at the scale of its facets, and
 // the untangling leaves faces folded and a few non-convex where the primal lost its
 // topology (fingers, toes). The last resort's operations go on after the moves have
 // spent their tries, round after round: at most a tenth of the non-convex faces the
 // stage found are left by the count (27 of 222 when the operations stopped with
-// the tries, after one round; 5 before the untangling off the tangent planes, 1 now).
+// the tries, after one round; 5 before the untangling off the tangent planes, 2 now).
 void check_operations_go_on(const std::string& folder)
 {
   const Measured man = check_model(folder, "man", false, Map::POSITION_NORMAL, true, 0);
   CHECK(man.non_convex * 10 <= man.stats.untangle.non_convex_before);
   CHECK(man.stats.untangle.collapses + man.stats.untangle.rotations > 0);
+  CHECK(man.stats.untangle.moves_off_surface > 0); // the run off the tangent planes too
 }
 
 // man with the position-normal map and its normals averaged as the program does: the
@@ -201,14 +233,14 @@ void check_operations_go_on(const std::string& folder)
 // the vertices: χ 2 -> 10, 3 components); averaged, the refinement keeps the topology.
 // Where man's triangles fold over one another (dihedral angles up to 178 degrees), a
 // quad whose corners are held on crease lines by the planes they sample stayed
-// non-convex by the count (1 before the untangling off the tangent planes).
+// non-convex by the count (1 before the untangling off the tangent planes; the
+// relaxation no longer makes a face convex in itself a dart either).
 void check_man_keeps_its_topology(const std::string& folder)
 {
   const Measured man = check_model(folder, "man", false, Map::POSITION_NORMAL, true);
   CHECK(man.stats.topology_preserved());
   CHECK_EQ(man.stats.primal.output_components, std::size_t(1)); // and χ 2: check_model()
   CHECK_EQ(man.non_convex, std::size_t(0));
-  CHECK(man.stats.untangle.moves_off_surface > 0);
 }
 
 // The last resort's connectivity changes follow the collapse's parameters: none without
@@ -240,14 +272,14 @@ int main(int argc, char** argv)
     return EXIT_FAILURE;
   }
   check_model(argv[1], "refined_elephant", true);
-  check_model(argv[1], "bunny00", true);
+  check_shape(check_model(argv[1], "bunny00", true), 35);
   check_model(argv[1], "fandisk", false);
   // the normals as computed, the library's maps' default
   check_model(argv[1], "refined_elephant", true, Map::POSITION_NORMAL, false, 0);
   check_model(argv[1], "bunny00", true, Map::POSITION_NORMAL, false, 0);
   check_model(argv[1], "fandisk", false, Map::POSITION_NORMAL, false, 0);
-  check_model(argv[1], "armadillo", true, Map::IDENTITY);
-  check_model(argv[1], "man", true, Map::IDENTITY);
+  check_shape(check_model(argv[1], "armadillo", true, Map::IDENTITY), 50);
+  check_shape(check_model(argv[1], "man", true, Map::IDENTITY), 50);
   check_model(argv[1], "refined_elephant", true, Map::POSITION_NORMAL_COLOR);
   check_operations_go_on(argv[1]);
   check_man_keeps_its_topology(argv[1]);

@@ -115,6 +115,18 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
 
 namespace internal {
 
+/// The squaring of `remesh()`'s quads after the relaxation: `steps` steps of
+/// `Tangent_plane_relaxer::square_up()`, with the parameters of
+/// `relax_on_tangent_planes()`. Returns the time taken, in ms.
+template <class PolygonMesh, class NamedParameters>
+double square_quads(PolygonMesh& mesh, const NamedParameters& np, int steps)
+{
+  const auto start = std::chrono::steady_clock::now();
+  const Progress progress = progress_of(np);
+  Tangent_plane_relaxer<PolygonMesh, NamedParameters>(mesh, np, progress).square_up(steps);
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
 /// The untangling of `remesh()` (see `Untangle_statistics` and Quad_untangler.h), with
 /// the parameters of `relax_on_tangent_planes()` but its steps: after the relaxation,
 /// or in place of it.

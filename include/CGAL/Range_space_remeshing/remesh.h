@@ -165,6 +165,9 @@ Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np, const Q
   return stats;
 }
 
+/// The steps of the squaring after the relaxation (`square_quads()`).
+constexpr int squaring_steps = 20;
+
 /// One run of the pipeline at cell size `h`, into `quads` (empty).
 template <class ConcurrencyTag, class TriangleMesh, class QuadMesh, class NamedParameters, class NamedParametersOut>
 Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, const NamedParameters& np,
@@ -245,6 +248,8 @@ Remesh_statistics remesh_at(double h, const TriangleMesh& tm, QuadMesh& quads, c
           relax_on_tangent_planes(quads, stage_parameters.number_of_relaxation_steps(improvement.relaxation_steps));
     if(improvement.untangle_near_target == 0 || is_near_target(num_vertices(quads), improvement.untangle_near_target))
       stats.untangle = untangle(quads, stage_parameters, improvement);
+    if(improvement.relaxation_steps > 0)
+      stats.time_relaxation_ms += square_quads(quads, stage_parameters, squaring_steps);
   } catch(const Remeshing_cancelled&) {
     // cancelled after a refined primal: the last size refined from had defects
     if(stats.primal.topology_refinements == 0)
@@ -386,7 +391,11 @@ tangled is collapsed along a diagonal, or an edge of it rotated, where that leav
 the faces it changes less tangled (all quads and the topology kept); faces still tangled
 then (where the input folds) get one more untangling whose moves may leave the tangent
 planes along the vertex normals, by at most a tenth of a vertex's mean edge length
-(`Untangle_statistics::moves_off_surface`). When the cell size
+(`Untangle_statistics::moves_off_surface`). With the relaxation, the quads are then
+squared: 20 steps move each vertex inside the surface whose faces are all quads, in
+the plane of its quads, towards the mean of the points that would make each of them a
+square at its corner, a move taken back where it makes a face's shape worse (its time
+counts in `time_relaxation_ms`). When the cell size
 resolves nothing (an empty primal, or only pieces without a dual), `quads` is left
 empty and the statistics say why (`dropped_pieces`, `uncrossed_border_cycles`).
 

@@ -55,9 +55,11 @@ namespace internal {
 inline void keep_faces_unfolded(const Face_corners& fc, const std::vector<Vec3>& position,
                                 const std::vector<Vec3>& normal, std::vector<Vec3>& next_position)
 {
-  // refused: a worse shape (a fold also where the face was non-convex before)
+  // refused: a worse shape (a fold also where the face was non-convex before), or a
+  // face convex in itself made a dart (a folded face may be either)
   auto made_worse = [&](std::size_t k) {
-    return shape_of(fc, k, next_position, normal) > shape_of(fc, k, position, normal);
+    return shape_of(fc, k, next_position, normal) > shape_of(fc, k, position, normal) ||
+           (!is_convex_in_itself(fc, k, next_position) && is_convex_in_itself(fc, k, position));
   };
   std::vector<std::size_t> found, again;
   for(std::size_t k = 0; k < fc.size(); ++k)
@@ -151,6 +153,30 @@ public:
       keep_faces_unfolded(face_corners, position_, normal_, next_position_);
       position_.swap(next_position_);
       normal_.swap(next_normal_);
+    }
+    write_back();
+  }
+
+  /// The squaring (see `square_quads()`): `iterations` steps, each moving every vertex
+  /// inside the surface whose faces are all quads towards where it would make them
+  /// squares at its corner (`square_target()`), along the surface. The moves that
+  /// make a face's shape worse are taken back, as in `run()`.
+  void square_up(int iterations)
+  {
+    read_vertices();
+    find_border();
+    prepare_projections();
+    const Face_corners face_corners(mesh_, vertex_index_, n_);
+    for(int iteration = 0; iteration < iterations; ++iteration) {
+      std::size_t k = 0;
+      for(vertex_descriptor v : vertices(mesh_)) {
+        progress_.report_every(Remeshing_stage::RELAXATION, std::size_t(iteration) * n_ + k++,
+                               std::size_t(iterations) * n_);
+        const std::size_t i = index(v);
+        next_position_[i] = squared_position(i, face_corners);
+      }
+      keep_faces_unfolded(face_corners, position_, normal_, next_position_);
+      position_.swap(next_position_);
     }
     write_back();
   }
@@ -416,6 +442,66 @@ private:
     for(int d = 0; d < 3; ++d)
       p[d] /= count;
     m = normalized(m);
+  }
+
+  // Where vertex i would make each of its quads a square at its corner: the apex of the
+  // right isosceles triangle whose hypotenuse joins its two neighbours in the quad, on
+  // the side the quad turns (n: the unit sum of the quads' vector areas), averaged
+  // over its quads. The mean of the neighbours keeps a sheared grid sheared (each
+  // vertex of an affine image of a regular grid is already the mean of its
+  // neighbours); squares are what this one converges to. False where a face of i is
+  // not a quad or the faces have no area.
+  bool square_target(std::size_t i, const Face_corners& fc, Vec3& target, Vec3& n) const
+  {
+    const std::size_t* incident = fc.incident_faces.data();
+    const std::size_t begin = fc.first_face[i], end = fc.first_face[i + 1];
+    n = {{0, 0, 0}};
+    for(std::size_t f = begin; f < end; ++f) {
+      const std::size_t k = incident[f];
+      if(fc.corner_count(k) != 4)
+        return false;
+      const std::size_t* corner = fc.corners.data() + fc.first[k];
+      Vec3 area, reference;
+      polygon_area_and_reference(
+          4, [&](std::size_t c) -> const Vec3& { return position_[corner[c]]; },
+          [&](std::size_t c) -> const Vec3& { return normal_[corner[c]]; }, area, reference);
+      n = {{n[0] + area[0], n[1] + area[1], n[2] + area[2]}};
+    }
+    n = normalized(n);
+    if(begin == end || n == Vec3{{0, 0, 0}})
+      return false;
+    target = {{0, 0, 0}};
+    for(std::size_t f = begin; f < end; ++f) {
+      const std::size_t* corner = fc.corners.data() + fc.first[incident[f]];
+      const std::size_t at = std::size_t(std::find(corner, corner + 4, i) - corner);
+      const Vec3& a = position_[corner[next_corner(at, 4)]];
+      const Vec3& b = position_[corner[previous_corner(at, 4)]];
+      const Vec3 half = {{(a[0] - b[0]) / 2, (a[1] - b[1]) / 2, (a[2] - b[2]) / 2}};
+      const Vec3 out = cross(n, half); // from the hypotenuse's middle away from the corner
+      for(int d = 0; d < 3; ++d)
+        target[d] += (a[d] + b[d]) / 2 - out[d];
+    }
+    const double count = double(end - begin);
+    target = {{target[0] / count, target[1] / count, target[2] / count}};
+    return true;
+  }
+
+  // Vertex i moved to its square target in the plane of its quads (whose normal the
+  // move keeps): a move along the surface, a second-order step off it. Not onto its
+  // tangent planes: where they bend (held on a line or a point by them, a third of
+  // the vertices of a coarse remesh of a limb) they would pin it, and the squares
+  // would not form. Vertices its planes do not place (on a face without area) and
+  // border vertices stay.
+  Vec3 squared_position(std::size_t i, const Face_corners& fc) const
+  {
+    Vec3 target, n;
+    if(on_border_[i] || on_face_without_area_[i] || projection_[i].constrained_directions() == 0 ||
+       !square_target(i, fc, target, n))
+      return position_[i];
+    const Vec3 move = difference(target, position_[i]);
+    const double across = dot(move, n);
+    return {{position_[i][0] + move[0] - across * n[0], position_[i][1] + move[1] - across * n[1],
+             position_[i][2] + move[2] - across * n[2]}};
   }
 
   // one step for vertex k: smooth, then project back (onto the border it samples, or
