@@ -115,7 +115,7 @@ double relax_on_tangent_planes(PolygonMesh& mesh, const NamedParameters& np = CG
 
 namespace internal {
 
-/// The squaring of `remesh()`'s quads after the relaxation: `steps` steps of
+/// The squaring of `remesh()`'s quads after the untangling: `steps` steps of
 /// `Tangent_plane_relaxer::square_up()`, with the parameters of
 /// `relax_on_tangent_planes()`. Returns the time taken, in ms.
 template <class PolygonMesh, class NamedParameters>

@@ -101,6 +101,19 @@ Quad_improvement quad_improvement_of(const NamedParameters& np)
   return improvement;
 }
 
+/// A later run of the untangling, `run`, added to the stage's statistics: its counts
+/// after are the stage's, its tries counted on from the stage's (see
+/// `Tangent_plane_relaxer::untangle()`).
+inline void add_untangling_run(Untangle_statistics& stats, const Untangle_statistics& run)
+{
+  stats.folded_after = run.folded_after;
+  stats.non_convex_after = run.non_convex_after;
+  stats.moves += run.moves;
+  stats.rounds += run.rounds;
+  stats.tries = run.tries;
+  stats.time_ms += run.time_ms;
+}
+
 /// The faces left tangled, untangled once more with their vertices free to leave their
 /// tangent planes by a little (`off_surface_reach`), with as many tries again as the
 /// first untangling.
@@ -109,13 +122,8 @@ void untangle_off_surface(QuadMesh& quads, const NamedParameters& np, Untangle_s
 {
   const std::size_t budget = stats.tries + untangle_off_surface_tries_per_vertex * stats.vertices_before;
   const Untangle_statistics last = untangle_faces_off_surface(quads, np, stats.tries, budget);
-  stats.folded_after = last.folded_after;
-  stats.non_convex_after = last.non_convex_after;
-  stats.moves += last.moves;
+  add_untangling_run(stats, last);
   stats.moves_off_surface = last.moves;
-  stats.rounds += last.rounds;
-  stats.tries = last.tries;
-  stats.time_ms += last.time_ms;
 }
 
 /// The last stage: the untangling, and where it leaves faces tangled, with the
@@ -152,20 +160,14 @@ Untangle_statistics untangle(QuadMesh& quads, const NamedParameters& np, const Q
     stats.time_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     if(stats.collapses + stats.rotations == operations)
       break;
-    const Untangle_statistics again = untangle_faces_again(quads, np, changed, stats.tries, budget);
-    stats.folded_after = again.folded_after;
-    stats.non_convex_after = again.non_convex_after;
-    stats.moves += again.moves;
-    stats.rounds += again.rounds;
-    stats.tries = again.tries;
-    stats.time_ms += again.time_ms;
+    add_untangling_run(stats, untangle_faces_again(quads, np, changed, stats.tries, budget));
   }
   if(improvement.collapse && stats.folded_after + stats.non_convex_after > 0)
     untangle_off_surface(quads, np, stats);
   return stats;
 }
 
-/// The steps of the squaring after the relaxation (`square_quads()`).
+/// The steps of the squaring after the untangling (`square_quads()`).
 constexpr int squaring_steps = 20;
 
 /// One run of the pipeline at cell size `h`, into `quads` (empty).

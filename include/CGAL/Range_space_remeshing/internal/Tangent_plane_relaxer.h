@@ -167,13 +167,17 @@ public:
     find_border();
     prepare_projections();
     const Face_corners face_corners(mesh_, vertex_index_, n_);
+    std::vector<Vec3> areas(face_corners.size());
     for(int iteration = 0; iteration < iterations; ++iteration) {
+      // each face's vector area, which every corner's move reads
+      for(std::size_t f = 0; f < face_corners.size(); ++f)
+        areas[f] = vector_area(face_corners, f);
       std::size_t k = 0;
       for(vertex_descriptor v : vertices(mesh_)) {
         progress_.report_every(Remeshing_stage::RELAXATION, std::size_t(iteration) * n_ + k++,
                                std::size_t(iterations) * n_);
         const std::size_t i = index(v);
-        next_position_[i] = squared_position(i, face_corners);
+        next_position_[i] = squared_position(i, face_corners, areas);
       }
       keep_faces_unfolded(face_corners, position_, normal_, next_position_);
       position_.swap(next_position_);
@@ -191,7 +195,8 @@ public:
   /// themselves (seen from their own vector area, folded or not) and those with a corner
   /// where it is true; the counts are of all. With `off_surface`, a vertex may also
   /// leave its tangent planes along its normal by `off_surface_reach` of the mean
-  /// length of its edges (not on a crease or the border: those stay on it).
+  /// length of its edges (border vertices stay on the border; vertices its planes hold
+  /// on a crease line or a point may leave it so).
   template <class StartAtMap = CGAL::Constant_property_map<vertex_descriptor, bool>>
   Untangle_statistics untangle(std::size_t tried_before, std::size_t budget, StartAtMap start_at = StartAtMap(true),
                                bool off_surface = false)
@@ -444,6 +449,17 @@ private:
     m = normalized(m);
   }
 
+  // twice the vector area of face k at the current positions
+  Vec3 vector_area(const Face_corners& fc, std::size_t k) const
+  {
+    const std::size_t* corner = fc.corners.data() + fc.first[k];
+    Vec3 area, reference;
+    polygon_area_and_reference(
+        fc.corner_count(k), [&](std::size_t c) -> const Vec3& { return position_[corner[c]]; },
+        [&](std::size_t c) -> const Vec3& { return normal_[corner[c]]; }, area, reference);
+    return area;
+  }
+
   // Where vertex i would make each of its quads a square at its corner: the apex of the
   // right isosceles triangle whose hypotenuse joins its two neighbours in the quad, on
   // the side the quad turns (n: the unit sum of the quads' vector areas), averaged
@@ -451,7 +467,9 @@ private:
   // vertex of an affine image of a regular grid is already the mean of its
   // neighbours); squares are what this one converges to. False where a face of i is
   // not a quad or the faces have no area.
-  bool square_target(std::size_t i, const Face_corners& fc, Vec3& target, Vec3& n) const
+  // `areas`: each face's vector area (`vector_area()`).
+  bool square_target(std::size_t i, const Face_corners& fc, const std::vector<Vec3>& areas, Vec3& target,
+                     Vec3& n) const
   {
     const std::size_t* incident = fc.incident_faces.data();
     const std::size_t begin = fc.first_face[i], end = fc.first_face[i + 1];
@@ -460,12 +478,7 @@ private:
       const std::size_t k = incident[f];
       if(fc.corner_count(k) != 4)
         return false;
-      const std::size_t* corner = fc.corners.data() + fc.first[k];
-      Vec3 area, reference;
-      polygon_area_and_reference(
-          4, [&](std::size_t c) -> const Vec3& { return position_[corner[c]]; },
-          [&](std::size_t c) -> const Vec3& { return normal_[corner[c]]; }, area, reference);
-      n = {{n[0] + area[0], n[1] + area[1], n[2] + area[2]}};
+      n = {{n[0] + areas[k][0], n[1] + areas[k][1], n[2] + areas[k][2]}};
     }
     n = normalized(n);
     if(begin == end || n == Vec3{{0, 0, 0}})
@@ -492,11 +505,11 @@ private:
   // the vertices of a coarse remesh of a limb) they would pin it, and the squares
   // would not form. Vertices its planes do not place (on a face without area) and
   // border vertices stay.
-  Vec3 squared_position(std::size_t i, const Face_corners& fc) const
+  Vec3 squared_position(std::size_t i, const Face_corners& fc, const std::vector<Vec3>& areas) const
   {
     Vec3 target, n;
     if(on_border_[i] || on_face_without_area_[i] || projection_[i].constrained_directions() == 0 ||
-       !square_target(i, fc, target, n))
+       !square_target(i, fc, areas, target, n))
       return position_[i];
     const Vec3 move = difference(target, position_[i]);
     const double across = dot(move, n);
